@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs the Debian packages curvebench needs, and only those that are missing.
+# Safe to run repeatedly; it calls apt-get only when something is absent.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build
+  libcgal-dev libgmp-dev libmpfr-dev
+  libboost-graph-dev
+  libbenchmark-dev libgtest-dev librapidcheck-dev
+  clang-14 libclang-rt-14-dev
+  libfreetype-dev fonts-dejavu-core
+  libtbb-dev libcli11-dev nlohmann-json3-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
