@@ -1,0 +1,106 @@
+// The exact sign of a polynomial in input coordinates: the tool for predicates CGAL
+// does not provide (beta-skeleton lunes, sums of distances, ...).
+//
+// A predicate is written once, generic in its number type:
+//
+//     exact_sign([&]<class NT>(std::type_identity<NT>) {
+//       return dot(difference<NT>(r, p), difference<NT>(r, q));
+//     });
+//
+// and evaluated first in double with a running forward-error bound, which settles the
+// sign almost always at the cost of a few flops; only when the bound cannot exclude
+// zero (near-degenerate input, overflow, underflow) is it evaluated again with GMP
+// rationals. Inputs are doubles, so the rational evaluation is exact: the sign returned
+// is the sign of the true value, never of a rounded one.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/enum.h>
+
+#include "geometry/kernel.h"
+
+namespace curvebench::geometry {
+
+// A double together with a bound on its distance to the exact value of the expression
+// it was computed from. Rounding to nearest adds at most half an ulp per operation,
+// bounded here by u|v| (u = 2^-53) plus the smallest subnormal for underflow.
+class Error_bounded_double {
+ public:
+  Error_bounded_double(double exact) : value_(exact), error_(0) {}  // NOLINT: inputs are exact
+
+  double value() const { return value_; }
+  double error() const { return error_; }
+
+  friend Error_bounded_double operator+(Error_bounded_double a, Error_bounded_double b) {
+    const double v = a.value_ + b.value_;
+    return {v, a.error_ + b.error_ + rounding(v)};
+  }
+  friend Error_bounded_double operator-(Error_bounded_double a, Error_bounded_double b) {
+    const double v = a.value_ - b.value_;
+    return {v, a.error_ + b.error_ + rounding(v)};
+  }
+  friend Error_bounded_double operator*(Error_bounded_double a, Error_bounded_double b) {
+    const double v = a.value_ * b.value_;
+    return {v, std::abs(a.value_) * b.error_ + std::abs(b.value_) * a.error_ +
+                   a.error_ * b.error_ + rounding(v)};
+  }
+
+  // The sign if the error bound proves it, else nothing.
+  bool sign_is_certain() const {
+    // The bound itself was computed with rounding; the factor covers that slack.
+    return std::isfinite(value_) && std::isfinite(error_) &&
+           std::abs(value_) > error_ * (1 + 0x1p-40);
+  }
+  CGAL::Sign sign() const { return value_ > 0 ? CGAL::POSITIVE : value_ < 0 ? CGAL::NEGATIVE : CGAL::ZERO; }
+
+ private:
+  Error_bounded_double(double value, double error) : value_(value), error_(error) {}
+  static double rounding(double v) {
+    return std::abs(v) * 0x1p-53 + std::numeric_limits<double>::denorm_min();
+  }
+
+  double value_;
+  double error_;
+};
+
+template <class NT>
+struct Vector2 {
+  NT x, y;
+  friend Vector2 operator+(const Vector2& a, const Vector2& b) { return {a.x + b.x, a.y + b.y}; }
+};
+
+template <class NT>
+Vector2<NT> difference(const Point& a, const Point& b) {
+  return {NT(a.x()) - NT(b.x()), NT(a.y()) - NT(b.y())};
+}
+template <class NT>
+NT dot(const Vector2<NT>& a, const Vector2<NT>& b) { return a.x * b.x + a.y * b.y; }
+template <class NT>
+NT cross(const Vector2<NT>& a, const Vector2<NT>& b) { return a.x * b.y - a.y * b.x; }
+template <class NT>
+NT squared_length(const Vector2<NT>& a) { return dot(a, a); }
+
+// CGAL::Gmpq rather than CGAL::Exact_rational: the latter may be gmpxx's mpq_class,
+// whose expression templates would dangle when a polynomial returns `a * b - c`.
+using Exact_number = CGAL::Gmpq;
+
+// The sign of `polynomial`, given its value in Error_bounded_double when the caller
+// already has it (e.g. a difference of cached squared lengths).
+template <class Polynomial>
+CGAL::Sign exact_sign(const Error_bounded_double& approximation, const Polynomial& polynomial) {
+  if (approximation.sign_is_certain()) return approximation.sign();
+  using Result = decltype(polynomial(std::type_identity<Exact_number>{}));
+  static_assert(std::is_same_v<Result, Exact_number>, "a polynomial must return its number type");
+  return CGAL::sign(polynomial(std::type_identity<Exact_number>{}));
+}
+
+template <class Polynomial>
+CGAL::Sign exact_sign(const Polynomial& polynomial) {
+  return exact_sign(polynomial(std::type_identity<Error_bounded_double>{}), polynomial);
+}
+
+}  // namespace curvebench::geometry

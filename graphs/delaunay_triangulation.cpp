@@ -1,0 +1,106 @@
+#include "graphs/delaunay_triangulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include "graphs/proximity_predicates.h"
+
+namespace curvebench::graphs {
+namespace {
+
+using Kernel = geometry::Kernel;
+using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<Vertex, Kernel>;
+using Tds = CGAL::Triangulation_data_structure_2<Vertex_base>;
+using Cgal_delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+
+[[noreturn]] void throw_duplicate(std::span<const Point> points) {
+  std::vector<Vertex> order(points.size());
+  std::iota(order.begin(), order.end(), Vertex{0});
+  std::sort(order.begin(), order.end(), [&](Vertex a, Vertex b) {
+    return std::tie(points[a], a) < std::tie(points[b], b);
+  });
+  const auto equal = std::adjacent_find(order.begin(), order.end(),
+                                        [&](Vertex a, Vertex b) { return points[a] == points[b]; });
+  throw std::invalid_argument("Delaunay triangulation: points " + std::to_string(*equal) + " and " +
+                              std::to_string(*std::next(equal)) +
+                              " are equal; merge duplicates first (geometry::PointSet)");
+}
+
+}  // namespace
+
+Delaunay_triangulation::Delaunay_triangulation(std::span<const Point> points) : points_(points) {
+  if (points.size() >= no_vertex) throw std::invalid_argument("Delaunay triangulation: too many points");
+  for (const Point& p : points)
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+      throw std::invalid_argument("Delaunay triangulation: a coordinate is not finite");
+  triangulate();
+  std::sort(edges_.begin(), edges_.end(), [](const Delaunay_edge& a, const Delaunay_edge& b) {
+    return std::tie(a.source, a.target) < std::tie(b.source, b.target);
+  });
+  index_neighbors();
+}
+
+void Delaunay_triangulation::triangulate() {
+  std::vector<std::pair<Point, Vertex>> indexed;
+  indexed.reserve(points_.size());
+  for (Vertex i = 0; i < points_.size(); ++i) indexed.emplace_back(points_[i], i);
+
+  Cgal_delaunay dt;
+  dt.insert(indexed.begin(), indexed.end());
+  if (dt.number_of_vertices() != points_.size()) throw_duplicate(points_);
+  if (dt.dimension() < 2) return connect_collinear();
+
+  edges_.reserve(3 * points_.size());
+  for (const auto& [face, i] : dt.finite_edges()) {
+    const auto opposite = [&](Cgal_delaunay::Face_handle f, int k) {
+      const auto v = f->vertex(k);
+      return dt.is_infinite(v) ? no_vertex : v->info();
+    };
+    Delaunay_edge e{face->vertex(Cgal_delaunay::cw(i))->info(), face->vertex(Cgal_delaunay::ccw(i))->info(),
+                    opposite(face, i), opposite(face->neighbor(i), dt.mirror_index(face, i))};
+    if (e.source > e.target) {
+      std::swap(e.source, e.target);
+      std::swap(e.left, e.right);
+    }
+    edges_.push_back(e);
+  }
+}
+
+void Delaunay_triangulation::connect_collinear() {
+  // Lexicographic order is the order along the line, whatever its direction.
+  std::vector<Vertex> order(points_.size());
+  std::iota(order.begin(), order.end(), Vertex{0});
+  std::sort(order.begin(), order.end(), [&](Vertex a, Vertex b) { return points_[a] < points_[b]; });
+  for (std::size_t k = 1; k < order.size(); ++k)
+    edges_.push_back({std::min(order[k - 1], order[k]), std::max(order[k - 1], order[k]), no_vertex, no_vertex});
+}
+
+void Delaunay_triangulation::index_neighbors() {
+  first_neighbor_.assign(points_.size() + 1, 0);
+  for (const auto& e : edges_) {
+    ++first_neighbor_[e.source + 1];
+    ++first_neighbor_[e.target + 1];
+  }
+  std::partial_sum(first_neighbor_.begin(), first_neighbor_.end(), first_neighbor_.begin());
+  neighbors_.resize(first_neighbor_.back());
+  std::vector<std::size_t> next(first_neighbor_.begin(), first_neighbor_.end() - 1);
+  for (const auto& e : edges_) {
+    neighbors_[next[e.source]++] = e.target;
+    neighbors_[next[e.target]++] = e.source;
+  }
+}
+
+Vertex Delaunay_triangulation::nearest_neighbor(Vertex v) const {
+  Vertex nearest = no_vertex;
+  for (const Vertex w : neighbors(v))
+    if (nearest == no_vertex || closer(point(v), point(w), w, point(nearest), nearest)) nearest = w;
+  return nearest;
+}
+
+}  // namespace curvebench::graphs

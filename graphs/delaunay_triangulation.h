@@ -1,0 +1,61 @@
+// The Delaunay triangulation of a point set, flattened to index arrays: the common
+// first step of every proximity graph and of most reconstruction algorithms.
+//
+// Built once with CGAL (spatially sorted insertion; CGAL breaks cocircular ties by a
+// symbolic perturbation, so the triangulation does not depend on the input order), then
+// read through plain arrays: each finite edge with the vertices opposite it, and each
+// vertex's neighbours. Collinear input (CGAL dimension 1) gives the chain of consecutive
+// points; 0 or 1 point gives no edge.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "geometry/kernel.h"
+
+namespace curvebench::graphs {
+
+using geometry::Point;
+using Vertex = std::uint32_t;
+inline constexpr Vertex no_vertex = std::numeric_limits<Vertex>::max();
+
+struct Delaunay_edge {
+  Vertex source, target;  // source < target
+  Vertex left, right;     // vertices opposite the edge in its two triangles, or no_vertex
+};
+
+class Delaunay_triangulation {
+ public:
+  // Throws std::invalid_argument if two points are equal (merge them first, see
+  // geometry::PointSet) or a coordinate is not finite.
+  explicit Delaunay_triangulation(std::span<const Point> points);
+
+  std::span<const Point> points() const { return points_; }
+  std::size_t size() const { return points_.size(); }
+  const Point& point(Vertex v) const { return points_[v]; }
+
+  // Every finite edge once, sorted by (source, target).
+  std::span<const Delaunay_edge> edges() const { return edges_; }
+
+  std::span<const Vertex> neighbors(Vertex v) const {
+    return {neighbors_.data() + first_neighbor_[v], neighbors_.data() + first_neighbor_[v + 1]};
+  }
+
+  // The nearest other point, ties to the smaller index; no_vertex if there is none.
+  // Exact: the nearest neighbour of a point is always one of its Delaunay neighbours.
+  Vertex nearest_neighbor(Vertex v) const;
+
+ private:
+  void triangulate();
+  void connect_collinear();
+  void index_neighbors();
+
+  std::span<const Point> points_;
+  std::vector<Delaunay_edge> edges_;
+  std::vector<std::size_t> first_neighbor_;
+  std::vector<Vertex> neighbors_;
+};
+
+}  // namespace curvebench::graphs

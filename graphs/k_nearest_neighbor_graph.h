@@ -1,0 +1,20 @@
+// The k-nearest-neighbour graph: pq is an edge iff q is among the k nearest points of p
+// or p among those of q (survey, "Proximity Graphs"). Distances are compared exactly and
+// equal distances go to the smaller index, so "the k nearest" is always well defined.
+//
+// Best-first search through the Delaunay triangulation from p: the points within any
+// distance of p are connected in it (see delaunay_region_search.h), so the search meets
+// them in order of distance. O(n k log k) after the triangulation.
+#pragma once
+
+#include "graphs/delaunay_triangulation.h"
+#include "graphs/graph.h"
+
+namespace curvebench::graphs {
+
+Graph k_nearest_neighbor_graph(const Delaunay_triangulation& dt, std::size_t k);
+inline Graph k_nearest_neighbor_graph(std::span<const Point> points, std::size_t k) {
+  return k_nearest_neighbor_graph(Delaunay_triangulation(points), k);
+}
+
+}  // namespace curvebench::graphs

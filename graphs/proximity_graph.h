@@ -1,0 +1,33 @@
+// Every proximity graph by name: the table the command line, the benchmarks and the
+// fuzzer iterate, so adding a builder is one header plus one row here.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "graphs/delaunay_triangulation.h"
+#include "graphs/graph.h"
+
+namespace curvebench::graphs {
+
+struct Proximity_graph_parameters {
+  double beta = 1.5;           // beta-lune, beta-circle
+  std::size_t k = 2;           // knn
+  std::optional<double> alpha;  // alpha (squared radius); default: connecting_alpha(dt)
+};
+
+struct Proximity_graph {
+  std::string_view name;         // as typed on the command line
+  std::string_view description;  // one line for --help
+  Graph (*build)(const Delaunay_triangulation&, const Proximity_graph_parameters&);
+};
+
+std::span<const Proximity_graph> proximity_graphs();
+const Proximity_graph* find_proximity_graph(std::string_view name);
+
+// The smallest alpha whose alpha-complex contains the EMST, so it is connected:
+// (longest EMST edge / 2)^2, rounded up. A scale-free default for the alpha-shape.
+double connecting_alpha(const Delaunay_triangulation& dt);
+
+}  // namespace curvebench::graphs

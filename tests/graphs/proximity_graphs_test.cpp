@@ -1,0 +1,176 @@
+// Every proximity-graph builder against its brute-force definition, on point sets built
+// to be degenerate (grids, collinear runs, extreme exponents), plus the laws that tie
+// the graphs together.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "graphs/alpha_shape_boundary.h"
+#include "graphs/beta_skeleton.h"
+#include "graphs/delaunay_graph.h"
+#include "graphs/euclidean_minimum_spanning_tree.h"
+#include "graphs/gabriel_graph.h"
+#include "graphs/k_nearest_neighbor_graph.h"
+#include "graphs/proximity_graph.h"
+#include "graphs/relative_neighborhood_graph.h"
+#include "graphs/sphere_of_influence_graph.h"
+#include "tests/support/brute_force_graphs.h"
+#include "tests/support/point_generators.h"
+
+namespace curvebench {
+namespace {
+
+using namespace graphs;
+using testing::point_sets;
+using Edges = std::vector<Edge>;
+
+Edges edges_of(const Graph& g) { return edge_list(g); }
+
+bool subset(const Edges& a, const Edges& b) { return std::includes(b.begin(), b.end(), a.begin(), a.end()); }
+
+const auto beta_values = rc::gen::element(0.0, 0.3, 0.5, 0.9, 1.0, 1.2, 1.5, 2.0, 2.5, 7.0);
+
+RC_GTEST_PROP(DelaunayGraph, IsATriangulationWhoseEdgesAdmitEmptyCircles, ()) {
+  const auto points = *point_sets(14);
+  const Edges dt = edges_of(delaunay_graph(points));
+  RC_ASSERT(subset(testing::strong_delaunay_edges(points), dt));
+  RC_ASSERT(subset(dt, testing::weak_delaunay_edges(points)));
+  RC_ASSERT(!testing::has_crossing_or_overlap(points, dt));
+  // A triangulation of n points, h of them on the hull boundary, has 3n - 3 - h edges;
+  // a chain of n - 1 if all are collinear.
+  const std::size_t n = points.size();
+  const bool collinear = std::all_of(points.begin(), points.end(), [&](const Point& p) {
+    return n < 3 || CGAL::collinear(points[0], points[1], p);
+  });
+  const std::size_t expected = n < 2 ? 0 : collinear ? n - 1 : 3 * n - 3 - testing::hull_boundary_size(points);
+  RC_ASSERT(dt.size() == expected);
+}
+
+RC_GTEST_PROP(DelaunayGraph, DoesNotDependOnInputOrder, ()) {
+  const auto points = *point_sets(20);
+  auto order = *rc::gen::container<std::vector<int>>(points.size(), rc::gen::arbitrary<int>());
+  std::vector<std::size_t> permutation(points.size());
+  std::iota(permutation.begin(), permutation.end(), 0);
+  std::sort(permutation.begin(), permutation.end(), [&](auto a, auto b) { return std::tie(order[a], a) < std::tie(order[b], b); });
+  std::vector<Point> shuffled;
+  for (auto i : permutation) shuffled.push_back(points[i]);
+  Edges mapped;
+  for (const auto& [i, j] : edges_of(delaunay_graph(shuffled)))
+    mapped.emplace_back(std::min(permutation[i], permutation[j]), std::max(permutation[i], permutation[j]));
+  std::sort(mapped.begin(), mapped.end());
+  RC_ASSERT(mapped == edges_of(delaunay_graph(points)));
+}
+
+RC_GTEST_PROP(EuclideanMinimumSpanningTree, EqualsPrimsTreeUnderTheSameExactOrder, ()) {
+  const auto points = *point_sets(16);
+  const Edges tree = edges_of(euclidean_minimum_spanning_tree(points));
+  const Edges expected = testing::brute_force_minimum_spanning_tree(points);
+  RC_ASSERT(tree == expected);
+  RC_ASSERT(tree.size() == (points.empty() ? 0 : points.size() - 1));
+  const double w = testing::total_length(points, tree), w_expected = testing::total_length(points, expected);
+  RC_ASSERT(std::abs(w - w_expected) <= 1e-12 * std::abs(w_expected) || !std::isfinite(w_expected));
+}
+
+RC_GTEST_PROP(GabrielGraph, EqualsBruteForce, ()) {
+  const auto points = *point_sets(16);
+  RC_ASSERT(edges_of(gabriel_graph(points)) == testing::brute_force_gabriel_graph(points));
+}
+
+RC_GTEST_PROP(RelativeNeighborhoodGraph, EqualsBruteForce, ()) {
+  const auto points = *point_sets(16);
+  RC_ASSERT(edges_of(relative_neighborhood_graph(points)) == testing::brute_force_relative_neighborhood_graph(points));
+}
+
+RC_GTEST_PROP(BetaSkeleton, LuneBasedEqualsBruteForce, ()) {
+  const auto points = *point_sets(12);
+  const double beta = *beta_values;
+  RC_TAG(beta);
+  RC_ASSERT(edges_of(beta_skeleton(points, beta, Beta_region::lune)) ==
+            testing::brute_force_beta_skeleton(points, beta, Beta_region::lune));
+}
+
+RC_GTEST_PROP(BetaSkeleton, CircleBasedEqualsBruteForce, ()) {
+  const auto points = *point_sets(12);
+  const double beta = *beta_values;
+  RC_TAG(beta);
+  RC_ASSERT(edges_of(beta_skeleton(points, beta, Beta_region::circle)) ==
+            testing::brute_force_beta_skeleton(points, beta, Beta_region::circle));
+}
+
+RC_GTEST_PROP(ProximityGraphs, ContainmentChainAndBetaIdentities, ()) {
+  const auto points = *point_sets(40);
+  const Delaunay_triangulation dt(points);
+  const Edges emst = edges_of(euclidean_minimum_spanning_tree(dt)), rng = edges_of(relative_neighborhood_graph(dt)),
+              gabriel = edges_of(gabriel_graph(dt)), delaunay = edges_of(delaunay_graph(dt));
+  RC_ASSERT(subset(emst, rng));
+  RC_ASSERT(subset(rng, gabriel));
+  RC_ASSERT(subset(gabriel, delaunay));
+  RC_ASSERT(edges_of(beta_skeleton(dt, 1, Beta_region::lune)) == gabriel);
+  RC_ASSERT(edges_of(beta_skeleton(dt, 1, Beta_region::circle)) == gabriel);
+  RC_ASSERT(edges_of(beta_skeleton(dt, 2, Beta_region::lune)) == rng);
+  // A larger beta forbids a larger region; for beta >= 1 the lune lies inside the circles.
+  const double smaller = *beta_values, larger = *beta_values;
+  if (smaller <= larger)
+    for (const auto region : {Beta_region::lune, Beta_region::circle})
+      RC_ASSERT(subset(edges_of(beta_skeleton(dt, larger, region)), edges_of(beta_skeleton(dt, smaller, region))));
+  if (larger >= 1)
+    RC_ASSERT(subset(edges_of(beta_skeleton(dt, larger, Beta_region::circle)),
+                     edges_of(beta_skeleton(dt, larger, Beta_region::lune))));
+}
+
+RC_GTEST_PROP(SphereOfInfluenceGraph, EqualsBruteForce, ()) {
+  const auto points = *point_sets(16);
+  RC_ASSERT(edges_of(sphere_of_influence_graph(points)) == testing::brute_force_sphere_of_influence_graph(points));
+}
+
+RC_GTEST_PROP(KNearestNeighborGraph, EqualsBruteForce, ()) {
+  const auto points = *point_sets(16);
+  const auto k = *rc::gen::inRange<std::size_t>(0, 6);
+  RC_ASSERT(edges_of(k_nearest_neighbor_graph(points, k)) == testing::brute_force_k_nearest_neighbor_graph(points, k));
+}
+
+RC_GTEST_PROP(AlphaShapeBoundary, EqualsBruteForce, ()) {
+  const auto points = *point_sets(12);
+  // alpha = 0, and squared radii of small grids (0.25, 0.5, 1.25, ...) to hit every tie.
+  const double alpha = *rc::gen::element(0.0, 0.25, 0.5, 0.625, 1.0, 1.25, 2.0, 3.0, 1e9);
+  RC_TAG(alpha);
+  RC_ASSERT(edges_of(alpha_shape_boundary(points, alpha)) == testing::brute_force_alpha_shape_boundary(points, alpha));
+}
+
+TEST(ProximityGraphs, EveryBuilderRejectsDuplicatePoints) {
+  const std::vector<Point> points{{0, 0}, {1, 0}, {0, 0}};
+  for (const auto& graph : proximity_graphs())
+    EXPECT_THROW(graph.build(Delaunay_triangulation(points), {}), std::invalid_argument) << graph.name;
+  EXPECT_THROW(alpha_shape_boundary(points, 1), std::invalid_argument);
+}
+
+TEST(ProximityGraphs, EveryBuilderHandlesZeroToThreePoints) {
+  const std::vector<std::vector<Point>> inputs{{}, {{1, 1}}, {{0, 0}, {1, 0}}, {{0, 0}, {1, 0}, {2, 0}}, {{0, 0}, {1, 0}, {0, 1}}};
+  for (const auto& points : inputs)
+    for (const auto& graph : proximity_graphs()) {
+      const Graph g = graph.build(Delaunay_triangulation(points), {});
+      EXPECT_EQ(boost::num_vertices(g), points.size()) << graph.name;
+      EXPECT_LE(boost::num_edges(g), points.size() * (points.size() - (points.empty() ? 0 : 1)) / 2) << graph.name;
+    }
+}
+
+TEST(RelativeNeighborhoodGraph, EquidistantPointsDoNotBlockButCornersOfASquareDo) {
+  // |pq| = |pr| = 5: r is on the boundary of pq's lune and q on pr's, so neither blocks.
+  const std::vector<Point> isosceles{{0, 0}, {5, 0}, {3, 4}};
+  EXPECT_EQ(edges_of(relative_neighborhood_graph(isosceles)), (Edges{{0, 1}, {0, 2}, {1, 2}}));
+  const std::vector<Point> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  EXPECT_EQ(edges_of(relative_neighborhood_graph(square)), (Edges{{0, 1}, {0, 3}, {1, 2}, {2, 3}}));
+  EXPECT_EQ(edges_of(gabriel_graph(square)), (Edges{{0, 1}, {0, 3}, {1, 2}, {2, 3}}));
+  EXPECT_EQ(edges_of(delaunay_graph(square)).size(), 5u);
+}
+
+TEST(BetaSkeleton, RejectsNegativeOrNonFiniteBeta) {
+  const std::vector<Point> points{{0, 0}, {1, 0}};
+  EXPECT_THROW(beta_skeleton(points, -1, Beta_region::lune), std::invalid_argument);
+  EXPECT_THROW(beta_skeleton(points, std::numeric_limits<double>::quiet_NaN(), Beta_region::lune), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace curvebench

@@ -1,0 +1,41 @@
+// Brute-force oracles for the proximity graphs, straight from the textbook definitions:
+// every pair against every point, in exact rational arithmetic (CGAL::Exact_rational),
+// or exact real arithmetic with square roots (CORE::Expr) where the definition has
+// circle centres or distances that are irrational. Independent of graphs/: none of the
+// polynomial rewritings in proximity_predicates.h is used here.
+#pragma once
+
+#include <vector>
+
+#include "geometry/edge.h"
+#include "geometry/kernel.h"
+#include "graphs/proximity_predicates.h"
+
+namespace curvebench::testing {
+
+using geometry::Edge;
+using geometry::Point;
+
+// Pairs through which some circle has no point strictly inside ("weak" Delaunay edges),
+// and pairs through which some circle has every other point strictly outside ("strong").
+// Every Delaunay triangulation lies between the two.
+std::vector<Edge> weak_delaunay_edges(const std::vector<Point>& points);
+std::vector<Edge> strong_delaunay_edges(const std::vector<Point>& points);
+
+// Number of points on the boundary of the convex hull (vertices and points on its edges).
+std::size_t hull_boundary_size(const std::vector<Point>& points);
+// Whether two edges cross at a point interior to both, or one passes through a point.
+bool has_crossing_or_overlap(const std::vector<Point>& points, const std::vector<Edge>& edges);
+
+std::vector<Edge> brute_force_beta_skeleton(const std::vector<Point>& points, double beta, graphs::Beta_region region);
+std::vector<Edge> brute_force_relative_neighborhood_graph(const std::vector<Point>& points);
+std::vector<Edge> brute_force_gabriel_graph(const std::vector<Point>& points);
+std::vector<Edge> brute_force_minimum_spanning_tree(const std::vector<Point>& points);  // Prim, exact order
+std::vector<Edge> brute_force_sphere_of_influence_graph(const std::vector<Point>& points);
+std::vector<Edge> brute_force_k_nearest_neighbor_graph(const std::vector<Point>& points, std::size_t k);
+std::vector<Edge> brute_force_alpha_shape_boundary(const std::vector<Point>& points, double alpha);
+
+// Total Euclidean length of the edges, in double.
+double total_length(const std::vector<Point>& points, const std::vector<Edge>& edges);
+
+}  // namespace curvebench::testing
