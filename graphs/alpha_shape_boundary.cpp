@@ -56,7 +56,7 @@ Graph alpha_shape_boundary(std::span<const Point> points, double alpha) {
     const auto& [face, i] = *e;
     edges.emplace_back(face->vertex(Alpha_shape::cw(i))->info(), face->vertex(Alpha_shape::ccw(i))->info());
   }
-  return make_graph(points, std::move(edges));
+  return make_graph(points, edges);
 }
 
 }  // namespace curvebench::graphs

@@ -45,7 +45,7 @@ Graph beta_skeleton(const Delaunay_triangulation& dt, double beta, Beta_region r
       continue;
     edges.emplace_back(e.source, e.target);
   }
-  return make_graph(points, std::move(edges));
+  return make_graph(points, edges);
 }
 
 }  // namespace curvebench::graphs

@@ -40,9 +40,6 @@ Delaunay_triangulation::Delaunay_triangulation(std::span<const Point> points) : 
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
       throw std::invalid_argument("Delaunay triangulation: a coordinate is not finite");
   triangulate();
-  std::sort(edges_.begin(), edges_.end(), [](const Delaunay_edge& a, const Delaunay_edge& b) {
-    return std::tie(a.source, a.target) < std::tie(b.source, b.target);
-  });
   index_neighbors();
 }
 
@@ -57,18 +54,24 @@ void Delaunay_triangulation::triangulate() {
   if (dt.dimension() < 2) return connect_collinear();
 
   edges_.reserve(3 * points_.size());
-  for (const auto& [face, i] : dt.finite_edges()) {
-    const auto opposite = [&](Cgal_delaunay::Face_handle f, int k) {
-      const auto v = f->vertex(k);
-      return dt.is_infinite(v) ? no_vertex : v->info();
-    };
-    Delaunay_edge e{face->vertex(Cgal_delaunay::cw(i))->info(), face->vertex(Cgal_delaunay::ccw(i))->info(),
-                    opposite(face, i), opposite(face->neighbor(i), dt.mirror_index(face, i))};
-    if (e.source > e.target) {
-      std::swap(e.source, e.target);
-      std::swap(e.left, e.right);
+  // Faces list their vertices counterclockwise, so an interior edge appears as (a, b) in
+  // one face and (b, a) in the other: taking it from the face where a < b visits it once.
+  // Walking faces is cheaper than CGAL's edge iterator, and indices (unlike face
+  // addresses) make the choice the same on every run.
+  for (const auto face : dt.finite_face_handles()) {
+    for (int i = 0; i < 3; ++i) {
+      const auto neighbor = face->neighbor(i);
+      const bool on_hull = dt.is_infinite(neighbor);
+      // source -> target runs clockwise in `face`, which therefore lies on its right.
+      Delaunay_edge e{face->vertex(Cgal_delaunay::cw(i))->info(), face->vertex(Cgal_delaunay::ccw(i))->info(),
+                      on_hull ? no_vertex : neighbor->vertex(neighbor->index(face))->info(), face->vertex(i)->info()};
+      if (e.source > e.target) {
+        if (!on_hull) continue;
+        std::swap(e.source, e.target);
+        std::swap(e.left, e.right);
+      }
+      edges_.push_back(e);
     }
-    edges_.push_back(e);
   }
 }
 

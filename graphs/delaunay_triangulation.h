@@ -23,7 +23,7 @@ inline constexpr Vertex no_vertex = std::numeric_limits<Vertex>::max();
 
 struct Delaunay_edge {
   Vertex source, target;  // source < target
-  Vertex left, right;     // vertices opposite the edge in its two triangles, or no_vertex
+  Vertex left, right;     // apex of the triangle left / right of source -> target, or no_vertex
 };
 
 class Delaunay_triangulation {
@@ -36,7 +36,8 @@ class Delaunay_triangulation {
   std::size_t size() const { return points_.size(); }
   const Point& point(Vertex v) const { return points_[v]; }
 
-  // Every finite edge once, sorted by (source, target).
+  // Every finite edge once, in an order fixed by the input (not sorted: builders sort
+  // what they output, and sorting 3n edges here would cost a third of the triangulation).
   std::span<const Delaunay_edge> edges() const { return edges_; }
 
   std::span<const Vertex> neighbors(Vertex v) const {

@@ -51,7 +51,7 @@ Graph euclidean_minimum_spanning_tree(const Delaunay_triangulation& dt) {
     components.link(a, b);
     tree.emplace_back(c.source, c.target);
   }
-  return make_graph(dt.points(), std::move(tree));
+  return make_graph(dt.points(), tree);
 }
 
 }  // namespace curvebench::graphs

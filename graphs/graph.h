@@ -25,7 +25,7 @@ using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS
 
 // A graph on `points` with the given edges, each stored once as (min, max) in sorted order,
 // so that equal edge sets give identical graphs.
-Graph make_graph(std::span<const Point> points, std::vector<Edge> edges);
+Graph make_graph(std::span<const Point> points, const std::vector<Edge>& edges);
 
 // The edges of `graph` as sorted (i < j) pairs.
 std::vector<Edge> edge_list(const Graph& graph);

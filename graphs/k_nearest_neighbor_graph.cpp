@@ -32,7 +32,7 @@ Graph k_nearest_neighbor_graph(const Delaunay_triangulation& dt, std::size_t k) 
     }
     for (; !nearest.empty(); nearest.pop()) edges.emplace_back(p, nearest.top());
   }
-  return make_graph(dt.points(), std::move(edges));
+  return make_graph(dt.points(), edges);
 }
 
 }  // namespace curvebench::graphs

@@ -26,7 +26,7 @@ Graph sphere_of_influence_graph(const Delaunay_triangulation& dt) {
           return false;
         });
   }
-  return make_graph(dt.points(), std::move(edges));
+  return make_graph(dt.points(), edges);
 }
 
 }  // namespace curvebench::graphs

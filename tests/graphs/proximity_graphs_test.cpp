@@ -48,6 +48,33 @@ RC_GTEST_PROP(DelaunayGraph, IsATriangulationWhoseEdgesAdmitEmptyCircles, ()) {
   RC_ASSERT(dt.size() == expected);
 }
 
+RC_GTEST_PROP(DelaunayTriangulation, ApexesNeighborsAndNearestNeighborsAreConsistent, ()) {
+  const auto points = *point_sets(20);
+  const Delaunay_triangulation dt(points);
+  std::vector<std::vector<Vertex>> adjacent(points.size());
+  for (const Delaunay_edge& e : dt.edges()) {
+    RC_ASSERT(e.source < e.target);
+    const Point &p = points[e.source], &q = points[e.target];
+    if (e.left != no_vertex) RC_ASSERT(CGAL::orientation(p, q, points[e.left]) == CGAL::LEFT_TURN);
+    if (e.right != no_vertex) RC_ASSERT(CGAL::orientation(p, q, points[e.right]) == CGAL::RIGHT_TURN);
+    adjacent[e.source].push_back(e.target);
+    adjacent[e.target].push_back(e.source);
+  }
+  for (Vertex v = 0; v < points.size(); ++v) {
+    std::vector<Vertex> listed(dt.neighbors(v).begin(), dt.neighbors(v).end());
+    std::sort(listed.begin(), listed.end());
+    std::sort(adjacent[v].begin(), adjacent[v].end());
+    RC_ASSERT(listed == adjacent[v]);
+    // Brute force with CGAL's own exact distance comparison; ties to the smaller index.
+    Vertex nearest = no_vertex;
+    for (Vertex w = 0; w < points.size(); ++w)
+      if (w != v && (nearest == no_vertex ||
+                     CGAL::compare_distance_to_point(points[v], points[w], points[nearest]) == CGAL::SMALLER))
+        nearest = w;
+    RC_ASSERT(dt.nearest_neighbor(v) == nearest);
+  }
+}
+
 RC_GTEST_PROP(DelaunayGraph, DoesNotDependOnInputOrder, ()) {
   const auto points = *point_sets(20);
   auto order = *rc::gen::container<std::vector<int>>(points.size(), rc::gen::arbitrary<int>());

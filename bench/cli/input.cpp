@@ -1,0 +1,31 @@
+#include "bench/cli/input.h"
+
+#include <algorithm>
+#include <iostream>
+
+#include "geometry/point_io.h"
+
+namespace curvebench::cli {
+
+geometry::PointSet load_point_set(const std::filesystem::path& path) {
+  geometry::PointFile file = geometry::read_point_file(path);
+  const std::vector<std::size_t> lines = file.lines;
+  geometry::PointSet points(std::move(file.points));
+  for (const auto& d : points.duplicates())
+    std::cerr << path.string() << ':' << lines[d.input_index] << ": duplicate of the point on line "
+              << lines[d.first_input_index] << ", merged\n";
+  return points;
+}
+
+std::vector<geometry::Edge> to_input_indices(const geometry::PointSet& points, std::span<const geometry::Edge> edges) {
+  std::vector<geometry::Edge> renumbered;
+  renumbered.reserve(edges.size());
+  for (const auto& [i, j] : edges) {
+    const auto a = points.input_index(i), b = points.input_index(j);
+    renumbered.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  std::sort(renumbered.begin(), renumbered.end());
+  return renumbered;
+}
+
+}  // namespace curvebench::cli

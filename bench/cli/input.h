@@ -1,0 +1,23 @@
+// Loading the command line's input point files, with the duplicate policy applied and
+// reported where a person sees it.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include "geometry/edge.h"
+#include "geometry/point_set.h"
+
+namespace curvebench::cli {
+
+// Reads a point file in any supported format and merges exact duplicates into their
+// first occurrence, printing one line per merged point to stderr
+// ("FILE:LINE: duplicate of the point on line L, merged"). Throws geometry::ParseError.
+geometry::PointSet load_point_set(const std::filesystem::path& path);
+
+// Edges between kept points, renumbered to the input file's points (first occurrences),
+// as sorted (i < j) pairs: what every command writes, so users can index their own file.
+std::vector<geometry::Edge> to_input_indices(const geometry::PointSet& points, std::span<const geometry::Edge> edges);
+
+}  // namespace curvebench::cli

@@ -1,0 +1,11 @@
+// `curvebench list graphs [--names]`: what the tool can build, as a table for people
+// or one name per line for scripts.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace curvebench::cli {
+
+void add_list_command(CLI::App& app);
+
+}  // namespace curvebench::cli

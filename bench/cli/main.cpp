@@ -1,0 +1,24 @@
+// The `curvebench` command: one subcommand per job, each in its own file.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "bench/cli/graph_command.h"
+#include "bench/cli/list_command.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"curvebench: planar curve reconstruction on exact geometry"};
+  app.require_subcommand(1);
+  curvebench::cli::add_graph_command(app);
+  curvebench::cli::add_list_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    // ParseError messages already start with "FILE:LINE:"; everything else gets our name.
+    std::cerr << "curvebench: " << e.what() << '\n';
+    return 2;
+  }
+}
