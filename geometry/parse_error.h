@@ -1,0 +1,25 @@
+// The one exception every curvebench file reader throws for bad input, so that a
+// message always points a person at the exact place to fix: "FILE:LINE: what is wrong".
+// Line 0 means the file as a whole (it could not be read).
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace curvebench::geometry {
+
+class ParseError : public std::runtime_error {
+ public:
+  ParseError(std::string file, std::size_t line, std::string_view message);
+
+  const std::string& file() const noexcept { return file_; }
+  std::size_t line() const noexcept { return line_; }
+
+ private:
+  std::string file_;
+  std::size_t line_;
+};
+
+}  // namespace curvebench::geometry

@@ -1,0 +1,68 @@
+// The exact-sign evaluator: its error bound must contain the truth, and its signs must
+// agree with CGAL's exact predicates, above all where the doubles alone would lie.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+
+#include "geometry/exact_sign.h"
+#include "tests/geometry/finite_double.h"
+
+namespace curvebench::geometry {
+namespace {
+
+using test_helpers::finite_double;
+
+template <class NT>
+NT orientation_determinant(const Point& p, const Point& q, const Point& r) {
+  return cross(difference<NT>(q, p), difference<NT>(r, p));
+}
+
+CGAL::Sign exact_orientation(const Point& p, const Point& q, const Point& r) {
+  return exact_sign([&]<class NT>(std::type_identity<NT>) { return orientation_determinant<NT>(p, q, r); });
+}
+
+RC_GTEST_PROP(ErrorBoundedDouble, BoundContainsTheExactValue, ()) {
+  const Point p(*finite_double(), *finite_double()), q(*finite_double(), *finite_double()),
+      r(*finite_double(), *finite_double());
+  const Error_bounded_double approximate = orientation_determinant<Error_bounded_double>(p, q, r);
+  RC_PRE(std::isfinite(approximate.value()) && std::isfinite(approximate.error()));
+  const Exact_number exact = orientation_determinant<Exact_number>(p, q, r);
+  const Exact_number gap = exact - Exact_number(approximate.value());
+  RC_ASSERT(CGAL::abs(gap) <= Exact_number(approximate.error()));
+}
+
+RC_GTEST_PROP(ExactSign, AgreesWithCgalOrientationOnArbitraryDoubles, ()) {
+  const Point p(*finite_double(), *finite_double()), q(*finite_double(), *finite_double()),
+      r(*finite_double(), *finite_double());
+  RC_ASSERT(exact_orientation(p, q, r) == CGAL::orientation(p, q, r));
+}
+
+// Points a few ulps off a line: the double determinant is noise, the sign is not.
+RC_GTEST_PROP(ExactSign, AgreesWithCgalOrientationNearALine, ()) {
+  const double scale = std::ldexp(1.0, *rc::gen::inRange(-1000, 1000));
+  const double slope = *rc::gen::inRange(1, 1000) / 7.0;
+  const auto point_on_line = [&](int t, int ulps) {
+    double y = slope * t;
+    for (int i = 0; i < std::abs(ulps); ++i) y = std::nextafter(y, ulps > 0 ? INFINITY : -INFINITY);
+    return Point(t * scale, y * scale);
+  };
+  const Point p = point_on_line(*rc::gen::inRange(-50, 50), *rc::gen::inRange(-2, 3));
+  const Point q = point_on_line(*rc::gen::inRange(-50, 50), *rc::gen::inRange(-2, 3));
+  const Point r = point_on_line(*rc::gen::inRange(-50, 50), *rc::gen::inRange(-2, 3));
+  RC_ASSERT(exact_orientation(p, q, r) == CGAL::orientation(p, q, r));
+}
+
+TEST(ExactSign, DecidesWhereDoublesOverflowOrUnderflow) {
+  // Squares of 1e200 overflow and of 1e-200 underflow; the signs are still exact.
+  const auto squared_norm_difference = [](double a, double b) {
+    return exact_sign([&]<class NT>(std::type_identity<NT>) { return NT(a) * NT(a) - NT(b) * NT(b); });
+  };
+  EXPECT_EQ(squared_norm_difference(1e200, std::nextafter(1e200, 0.0)), CGAL::POSITIVE);
+  EXPECT_EQ(squared_norm_difference(1e-200, std::nextafter(1e-200, 1.0)), CGAL::NEGATIVE);
+  EXPECT_EQ(squared_norm_difference(1e-200, -1e-200), CGAL::ZERO);
+  EXPECT_EQ(squared_norm_difference(std::numeric_limits<double>::denorm_min(), 0.0), CGAL::POSITIVE);
+}
+
+}  // namespace
+}  // namespace curvebench::geometry
