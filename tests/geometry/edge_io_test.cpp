@@ -13,9 +13,9 @@
 namespace curvebench::geometry {
 namespace {
 
-using test_helpers::BadInput;
-using test_helpers::expect_parse_error;
-using test_helpers::TemporaryDirectory;
+using testing::BadInput;
+using testing::expect_parse_error;
+using testing::TemporaryDirectory;
 
 TEST(EdgeIo, ReadsEdgesWithCommentsAndAnyLineEnding) {
   const TemporaryDirectory dir;
@@ -29,7 +29,7 @@ TEST(EdgeIo, WritesOneEdgePerLine) {
   const TemporaryDirectory dir;
   const auto path = dir.path() / "edges.txt";
   write_edges(path, std::vector<Edge>{{0, 1}, {17, 4}});
-  EXPECT_EQ(test_helpers::read_bytes(path), "0 1\n17 4\n");
+  EXPECT_EQ(testing::read_bytes(path), "0 1\n17 4\n");
 }
 
 RC_GTEST_PROP(EdgeIo, WriteThenReadGivesTheSameEdges, (const std::vector<Edge>& edges)) {

@@ -6,12 +6,12 @@
 #include <cmath>
 
 #include "geometry/exact_sign.h"
-#include "tests/geometry/finite_double.h"
+#include "tests/support/finite_double.h"
 
 namespace curvebench::geometry {
 namespace {
 
-using test_helpers::finite_double;
+using testing::finite_double;
 
 template <class NT>
 NT orientation_determinant(const Point& p, const Point& q, const Point& r) {

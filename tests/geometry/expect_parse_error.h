@@ -11,7 +11,7 @@
 
 #include "geometry/parse_error.h"
 
-namespace curvebench::test_helpers {
+namespace curvebench::testing {
 
 // A malformed input for table-driven tests, and where and how it must be reported.
 struct BadInput {
@@ -38,4 +38,4 @@ void expect_parse_error(Parse&& parse, const std::string& file, std::size_t line
   }
 }
 
-}  // namespace curvebench::test_helpers
+}  // namespace curvebench::testing

@@ -12,16 +12,16 @@
 #include <vector>
 
 #include "tests/geometry/expect_parse_error.h"
-#include "tests/geometry/finite_double.h"
+#include "tests/support/finite_double.h"
 #include "tests/geometry/temporary_directory.h"
 
 namespace curvebench::geometry {
 namespace {
 
-using test_helpers::BadInput;
-using test_helpers::expect_parse_error;
-using test_helpers::finite_double;
-using test_helpers::TemporaryDirectory;
+using testing::BadInput;
+using testing::expect_parse_error;
+using testing::finite_double;
+using testing::TemporaryDirectory;
 
 using Coordinates = std::vector<std::pair<double, double>>;
 using Lines = std::vector<std::size_t>;

@@ -1,4 +1,4 @@
-// Every point file of the public data sets (/work/shared/data, described in its
+// Every point file of the public data sets (../shared/data beside the repository, described in its
 // README.md) and of the copies bundled in data/, checked against oracles that share no
 // code with the reader: lines split on every CR and every LF, numbers parsed by
 // std::istringstream (strtod) instead of std::from_chars.
@@ -21,7 +21,7 @@ namespace curvebench::geometry {
 namespace {
 
 namespace fs = std::filesystem;
-using test_helpers::read_bytes;
+using testing::read_bytes;
 
 const fs::path kSharedData = CURVEBENCH_SHARED_DATA_DIR;
 const fs::path kBundledData = fs::path(CURVEBENCH_SOURCE_DIR) / "data";

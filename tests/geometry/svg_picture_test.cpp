@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/geometry/finite_double.h"
+#include "tests/support/finite_double.h"
 #include "tests/geometry/temporary_directory.h"
 
 namespace curvebench::geometry {
@@ -272,16 +272,16 @@ TEST(SvgPicture, RejectsBadEdgesPointsAndStyles) {
 TEST(SvgPicture, WritesTheSameToAFileAsToAStream) {
   SvgPicture picture(std::vector<Point>{Point(0, 0), Point(1, 2)});
   picture.add_points();
-  const test_helpers::TemporaryDirectory dir;
+  const testing::TemporaryDirectory dir;
   picture.write(dir.path() / "picture.svg");
   std::ostringstream out;
   picture.write(out);
-  EXPECT_EQ(test_helpers::read_bytes(dir.path() / "picture.svg"), out.str());
+  EXPECT_EQ(testing::read_bytes(dir.path() / "picture.svg"), out.str());
 }
 
 RC_GTEST_PROP(SvgPicture, AnyFinitePointsGiveAWellFormedPicture, ()) {
   const auto points = *rc::gen::container<std::vector<Point>>(
-      rc::gen::construct<Point>(test_helpers::finite_double(), test_helpers::finite_double()));
+      rc::gen::construct<Point>(testing::finite_double(), testing::finite_double()));
   SvgPicture picture(points);
   std::vector<Edge> chain;
   for (std::size_t i = 1; i < points.size(); ++i) chain.emplace_back(i - 1, i);

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace curvebench::test_helpers {
+namespace curvebench::testing {
 
 class TemporaryDirectory {
  public:
@@ -49,4 +49,4 @@ inline std::string read_bytes(const std::filesystem::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-}  // namespace curvebench::test_helpers
+}  // namespace curvebench::testing

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace curvebench::test_helpers {
+namespace curvebench::testing {
 
 // Any finite double, drawn by bit pattern so that all magnitudes (subnormals up to
 // 1.8e308) come up, plus the values that are most likely to be mishandled.
@@ -26,4 +26,4 @@ inline rc::Gen<double> finite_double() {
           [](double x) { return std::isfinite(x); }));
 }
 
-}  // namespace curvebench::test_helpers
+}  // namespace curvebench::testing
