@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include <CGAL/Gmpq.h>
@@ -103,6 +104,24 @@ CGAL::Sign exact_sign(const Error_bounded_double& approximation, const Polynomia
 template <class Polynomial>
 CGAL::Sign exact_sign(const Polynomial& polynomial) {
   return exact_sign(polynomial(std::type_identity<Error_bounded_double>{}), polynomial);
+}
+
+// The cheapest filter, for comparing two sums of squares of coordinate differences (and
+// their multiples by an exact double): such sums have no cancellation, so each double is
+// within a relative 5 ulps of its exact value (inside the normal range), and a gap wider
+// than 2^-48 (a + b) decides the sign of b - a. Returns nothing when it cannot decide:
+// callers then ask exact_sign. Several times cheaper than Error_bounded_double, and
+// distance comparisons are most of what the proximity graphs evaluate.
+inline std::optional<CGAL::Sign> certain_sign_of_difference(double a, double b) {
+  const double sum = a + b, gap = b - a;
+  // Below 2^-900 the subnormal rounding of a term is no longer negligible.
+  if (!(sum >= 0x1p-900 && std::isfinite(sum)) || std::abs(gap) <= sum * 0x1p-48) return std::nullopt;
+  return gap > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+}
+
+inline double squared_distance_approximation(const Point& a, const Point& b) {
+  const double dx = a.x() - b.x(), dy = a.y() - b.y();
+  return dx * dx + dy * dy;
 }
 
 }  // namespace curvebench::geometry

@@ -4,35 +4,30 @@
 
 #include <boost/pending/disjoint_sets.hpp>
 
-#include "geometry/exact_sign.h"
+#include "graphs/proximity_predicates.h"
 
 namespace curvebench::graphs {
 namespace {
 
-using geometry::Error_bounded_double;
-
 struct Candidate {
-  Error_bounded_double squared_length;  // settles almost every comparison without GMP
+  double squared_length;  // rounded: settles almost every comparison without GMP
   Vertex source, target;
 };
 
 }  // namespace
 
 Graph euclidean_minimum_spanning_tree(const Delaunay_triangulation& dt) {
-  using geometry::difference, geometry::squared_length;
   std::vector<Candidate> candidates;
   candidates.reserve(dt.edges().size());
   for (const Delaunay_edge& e : dt.edges())
     candidates.push_back(
-        {squared_length(difference<Error_bounded_double>(dt.point(e.target), dt.point(e.source))), e.source,
-         e.target});
+        {geometry::squared_distance_approximation(dt.point(e.source), dt.point(e.target)), e.source, e.target});
 
   const auto shorter = [&](const Candidate& a, const Candidate& b) {
-    const CGAL::Sign s =
-        geometry::exact_sign(b.squared_length - a.squared_length, [&]<class NT>(std::type_identity<NT>) {
-          return squared_length(difference<NT>(dt.point(b.target), dt.point(b.source))) -
-                 squared_length(difference<NT>(dt.point(a.target), dt.point(a.source)));
-        });
+    const auto cached = geometry::certain_sign_of_difference(a.squared_length, b.squared_length);
+    const CGAL::Sign s = cached ? *cached
+                                : compare_lengths(dt.point(a.source), dt.point(a.target), dt.point(b.source),
+                                                  dt.point(b.target));
     return s == CGAL::POSITIVE ||
            (s == CGAL::ZERO && std::tie(a.source, a.target) < std::tie(b.source, b.target));
   };

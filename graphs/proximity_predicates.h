@@ -15,7 +15,10 @@ using geometry::Point;
 
 // The sign of |cd|^2 - |ab|^2: POSITIVE if segment ab is shorter than cd.
 inline CGAL::Sign compare_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
-  using geometry::difference, geometry::squared_length;
+  using geometry::difference, geometry::squared_distance_approximation, geometry::squared_length;
+  if (const auto s = geometry::certain_sign_of_difference(squared_distance_approximation(a, b),
+                                                          squared_distance_approximation(c, d)))
+    return *s;
   return geometry::exact_sign([&]<class NT>(std::type_identity<NT>) {
     return squared_length(difference<NT>(d, c)) - squared_length(difference<NT>(b, a));
   });
@@ -56,9 +59,16 @@ enum class Beta_region {
 // exceeds theta (sin theta = 1/beta) iff u.v <= 0 or (u.v)^2 < (beta^2 - 1)(u x v)^2.
 inline bool blocks(const Point& p, const Point& q, const Point& r, double beta, Beta_region region) {
   using geometry::cross, geometry::difference, geometry::dot, geometry::exact_sign, geometry::squared_length;
-  const auto angle_cosine_sign = exact_sign([&]<class NT>(std::type_identity<NT>) {
-    return dot(difference<NT>(p, r), difference<NT>(q, r));
-  });
+  // (p - r).(q - r) = (|rp|^2 + |rq|^2 - |pq|^2) / 2: the angle at r as a comparison of
+  // sums of squares, which the cheap filter decides.
+  using geometry::squared_distance_approximation;
+  const auto angle_cosine_sign = [&] {
+    if (const auto s = geometry::certain_sign_of_difference(
+            squared_distance_approximation(p, q),
+            squared_distance_approximation(r, p) + squared_distance_approximation(r, q)))
+      return *s;
+    return exact_sign([&]<class NT>(std::type_identity<NT>) { return dot(difference<NT>(p, r), difference<NT>(q, r)); });
+  }();
   if (beta < 1) {
     return angle_cosine_sign == CGAL::NEGATIVE &&
            exact_sign([&]<class NT>(std::type_identity<NT>) {
@@ -75,6 +85,8 @@ inline bool blocks(const Point& p, const Point& q, const Point& r, double beta, 
              return (NT(beta) * NT(beta) - NT(1)) * cross(u, v) * cross(u, v) - dot(u, v) * dot(u, v);
            }) == CGAL::POSITIVE;
   }
+  if (beta == 2)  // the relative neighbourhood graph: two distance comparisons
+    return compare_lengths(r, p, p, q) == CGAL::POSITIVE && compare_lengths(r, q, p, q) == CGAL::POSITIVE;
   // r is inside the disk centred at p + beta/2 (q - p) through p iff |r-p|^2 < beta (r-p).(q-p).
   const auto inside_disk_through = [&](const Point& a, const Point& b) {
     return exact_sign([&]<class NT>(std::type_identity<NT>) {
@@ -87,12 +99,16 @@ inline bool blocks(const Point& p, const Point& q, const Point& r, double beta, 
 
 // True if r lies in the open disk centred at the midpoint of pq with radius
 // |pq| sqrt(2 beta - 1) / 2, which contains the lune R_beta(p, q) for beta >= 1:
-// summing the two disk conditions of the lune gives |2r - p - q|^2 < (2 beta - 1)|pq|^2.
+// summing the two disk conditions of the lune gives |rp|^2 + |rq|^2 < beta |pq|^2.
 inline bool in_lune_hull(const Point& p, const Point& q, const Point& r, double beta) {
-  using geometry::difference, geometry::exact_sign, geometry::squared_length;
-  return exact_sign([&]<class NT>(std::type_identity<NT>) {
-           return (NT(2) * NT(beta) - NT(1)) * squared_length(difference<NT>(q, p)) -
-                  squared_length(difference<NT>(r, p) + difference<NT>(r, q));
+  using geometry::difference, geometry::squared_distance_approximation, geometry::squared_length;
+  if (const auto s = geometry::certain_sign_of_difference(
+          squared_distance_approximation(r, p) + squared_distance_approximation(r, q),
+          beta * squared_distance_approximation(p, q)))
+    return *s == CGAL::POSITIVE;
+  return geometry::exact_sign([&]<class NT>(std::type_identity<NT>) {
+           return NT(beta) * squared_length(difference<NT>(q, p)) - squared_length(difference<NT>(r, p)) -
+                  squared_length(difference<NT>(r, q));
          }) == CGAL::POSITIVE;
 }
 
@@ -118,7 +134,10 @@ inline bool spheres_of_influence_meet(const Point& p, const Point& p_nearest, co
 // True if |x - p| <= 2 |p - p_nearest|: the closed disk that holds every sphere-of-influence
 // neighbour q of p with r_q <= r_p.
 inline bool within_twice_nearest(const Point& p, const Point& p_nearest, const Point& x) {
-  using geometry::difference, geometry::exact_sign, geometry::squared_length;
+  using geometry::difference, geometry::exact_sign, geometry::squared_distance_approximation, geometry::squared_length;
+  if (const auto s = geometry::certain_sign_of_difference(squared_distance_approximation(x, p),
+                                                          4 * squared_distance_approximation(p_nearest, p)))
+    return *s == CGAL::POSITIVE;
   return exact_sign([&]<class NT>(std::type_identity<NT>) {
            return NT(4) * squared_length(difference<NT>(p_nearest, p)) - squared_length(difference<NT>(x, p));
          }) != CGAL::NEGATIVE;

@@ -66,3 +66,24 @@ TEST(ExactSign, DecidesWhereDoublesOverflowOrUnderflow) {
 
 }  // namespace
 }  // namespace curvebench::geometry
+
+namespace curvebench::geometry {
+namespace {
+
+// When the cheap filter decides a comparison of squared distances, it decides it right.
+RC_GTEST_PROP(CertainSignOfDifference, AgreesWithCgalDistanceComparison, ()) {
+  const auto coordinate = rc::gen::oneOf(testing::finite_double(), rc::gen::map(rc::gen::inRange(-8, 9), [](int i) {
+                                           return static_cast<double>(i);
+                                         }));
+  const Point a(*coordinate, *coordinate), b(*coordinate, *coordinate), c(*coordinate, *coordinate),
+      d(*coordinate, *coordinate);
+  const auto sign = certain_sign_of_difference(squared_distance_approximation(a, b), squared_distance_approximation(c, d));
+  RC_TAG(sign.has_value());
+  if (sign) {  // sign of |cd|^2 - |ab|^2
+    const auto expected = Kernel().compare_distance_2_object()(c, d, a, b);
+    RC_ASSERT(*sign == (expected == CGAL::LARGER ? CGAL::POSITIVE : expected == CGAL::SMALLER ? CGAL::NEGATIVE : CGAL::ZERO));
+  }
+}
+
+}  // namespace
+}  // namespace curvebench::geometry
