@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# End-to-end checks of the `curvebench` command line: exit codes, one-line errors that
+# name FILE:LINE, the duplicate policy and the input-index convention of edge lists.
+# Usage: curvebench_cli_test.sh PATH/TO/curvebench
+set -uo pipefail
+curvebench="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() {  # check DESCRIPTION COMMAND...: the command must succeed
+  local what="$1"; shift
+  if "$@"; then echo "ok: $what"; else echo "FAILED: $what"; failures=$((failures + 1)); fi
+}
+
+# A malformed file: exit status 2 and exactly one line on stderr, "curvebench: FILE:LINE: ...".
+printf '0 0\n1 1\n2 x\n' >"$work/bad.xy"
+"$curvebench" graph delaunay -i "$work/bad.xy" -o "$work/out.edges" 2>"$work/err"
+status=$?
+check "malformed input exits with status 2" test "$status" -eq 2
+check "malformed input gives one line" test "$(wc -l <"$work/err")" -eq 1
+check "the line names file and line" grep -q "^curvebench: $work/bad.xy:3: " "$work/err"
+
+# Non-finite coordinates are rejected the same way.
+printf '0 0\nnan 1\n' >"$work/nan.xy"
+"$curvebench" graph emst -i "$work/nan.xy" -o "$work/out.edges" 2>"$work/err"
+check "NaN exits with status 2 naming line 2" grep -q "nan.xy:2: " "$work/err"
+
+# Duplicates are merged into their first occurrence and edges name input lines:
+# kept points (0,0) (1,0) (0,1) are input points 0, 1, 3; their EMST is {0-1, 0-3}.
+printf '0 0\n1 0\n0 0\n0 1\n' >"$work/dup.xy"
+"$curvebench" graph emst -i "$work/dup.xy" -o "$work/dup.edges" 2>"$work/err"
+check "duplicates: exit 0" test $? -eq 0
+check "duplicates: one note naming both lines" grep -q "dup.xy:3: duplicate of the point on line 1, merged" "$work/err"
+check "duplicates: edges in input indices" diff <(printf '0 1\n0 3\n') "$work/dup.edges"
+
+# An unknown graph kind is a usage error, not a crash.
+"$curvebench" graph no-such-graph -i "$work/dup.xy" -o "$work/x" 2>/dev/null
+status=$?
+check "unknown kind is rejected" test "$status" -ne 0 -a "$status" -lt 128
+
+# Every listed graph builds on a degenerate input (a 3x3 grid: collinear and cocircular).
+printf '%s\n' '0 0' '1 0' '2 0' '0 1' '1 1' '2 1' '0 2' '1 2' '2 2' >"$work/grid.xy"
+for kind in $("$curvebench" list graphs --names); do
+  check "$kind on a grid" "$curvebench" graph "$kind" -i "$work/grid.xy" -o "$work/$kind.edges" --svg "$work/$kind.svg"
+done
+check "the grid's Delaunay triangulation has 16 edges" test "$(wc -l <"$work/delaunay.edges")" -eq 16
+check "the grid's Gabriel graph is its 12 unit edges" test "$(wc -l <"$work/gabriel.edges")" -eq 12
+
+echo "$((failures == 0 ? 1 : 0)) passed, $failures failed"
+exit $((failures > 0))
