@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer target of curvebench for a while: the crash hunt CI runs, and the
+# way a person grows the committed seed corpora.
+#
+#   scripts/fuzz.sh [SECONDS]          fuzz each target SECONDS (default: $FUZZ_SECONDS, else 60)
+#   scripts/fuzz.sh --merge [SECONDS]  the same, then add to fuzz/corpus/NAME/ the fewest
+#                                      new inputs that reach code the corpus does not
+#                                      (edges, not hit counts, so the corpus stays small)
+#
+# Builds the clang tree build-fuzz/ (packages: scripts/setup.sh; nothing is installed
+# here), finds the targets in it (fuzz/fuzz_NAME), and runs them one after another. New
+# inputs go to a temporary directory placed before the committed corpus fuzz/corpus/NAME/,
+# which is only read, so a run leaves the repository as it was (unless --merge).
+# Per-target libFuzzer flags (max_len, ...) come from fuzz/NAME.options (`key = value`
+# lines, as in OSS-Fuzz), a dictionary from fuzz/NAME.dict. Findings and each target's log go to
+# build-fuzz/artifacts/NAME/. Prints one line per target; exits 1 if any found something.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=$root/build-fuzz
+seconds=${FUZZ_SECONDS:-60}
+merge=false
+for arg in "$@"; do
+  case $arg in
+    --merge) merge=true ;;
+    '' | *[!0-9]*) echo "usage: $0 [--merge] [SECONDS]" >&2; exit 2 ;;
+    *) seconds=$arg ;;
+  esac
+done
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+if ! { CXX=clang++-14 cmake -S "$root" -B "$build" -G Ninja -DCURVEBENCH_FUZZ=ON &&
+  cmake --build "$build" -j "$(nproc)"; } >"$scratch/build.log" 2>&1; then
+  cat "$scratch/build.log" >&2
+  exit 1
+fi
+
+# The libFuzzer flags for target $1, one per line.
+flags_for() {
+  local name=$1 key value
+  printf '%s\n' -timeout=10 -rss_limit_mb=2048 "-artifact_prefix=$build/artifacts/$name/"
+  if [[ -f $root/fuzz/$name.options ]]; then
+    while IFS='=' read -r key value; do
+      key=${key//[[:space:]]/} value=${value//[[:space:]]/}
+      [[ -n $key && $key != \[* && $key != \#* ]] && printf -- '-%s=%s\n' "$key" "$value"
+    done <"$root/fuzz/$name.options"
+  fi
+  if [[ -f $root/fuzz/$name.dict ]]; then printf -- '-dict=%s\n' "$root/fuzz/$name.dict"; fi
+}
+
+# Fuzzes one target; prints its summary line and returns 1 on a finding.
+fuzz_target() {
+  local binary=$1 name=${1##*/fuzz_}
+  local corpus=$root/fuzz/corpus/$name new=$scratch/$name log=$build/artifacts/$name/fuzz.log
+  local -a flags seeds=()
+  mapfile -t flags < <(flags_for "$name")
+  if $merge; then mkdir -p "$corpus"; fi
+  if [[ -d $corpus ]]; then seeds=("$corpus"); fi
+  mkdir -p "$new" "$build/artifacts/$name"
+
+  if ! "$binary" "${flags[@]}" -max_total_time="$seconds" "$new" "${seeds[@]}" >"$log" 2>&1; then
+    local finding
+    finding=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -n 1)
+    echo "fuzz $name: FINDING ${finding:-(no input saved)}, log $log"
+    tail -n 40 "$log" | sed 's/^/    /' >&2
+    if [[ -n $finding ]]; then echo "    reproduce: $binary $finding" >&2; fi
+    return 1
+  fi
+  local done_line
+  done_line=$(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\) second.*/\1 runs in \2 s/p' "$log")
+  echo "fuzz $name: ${done_line:-? runs}, no finding"
+
+  if $merge; then
+    local before after
+    before=$(find "$corpus" -type f | wc -l)
+    "$binary" "${flags[@]}" -merge=1 -use_counters=0 "$corpus" "$new" >>"$log" 2>&1
+    after=$(find "$corpus" -type f | wc -l)
+    echo "fuzz $name: merged $((after - before)) new inputs into fuzz/corpus/$name/"
+  fi
+}
+
+status=0
+mapfile -t targets < <(find "$build/fuzz" -maxdepth 1 -type f -name 'fuzz_*' -perm -u+x | sort)
+if ((${#targets[@]} == 0)); then echo "fuzz: no fuzz_* target in $build/fuzz" >&2; exit 1; fi
+for binary in "${targets[@]}"; do fuzz_target "$binary" || status=1; done
+exit $status
