@@ -1,0 +1,21 @@
+// A place on a Curve: which component, and the parameter s in [0, piece_count()] along it
+// (survey, "Definitions and Notations": a curve is one or several components). Samplers
+// record where each point was drawn; lfs, sharp points and measures report where they are.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+
+namespace curvebench::geometry {
+
+struct Curve_location {
+  // For a point that is not on the curve (an outlier): no component, parameter NaN.
+  static constexpr std::size_t no_component = std::numeric_limits<std::size_t>::max();
+
+  std::size_t component = no_component;
+  double parameter = std::numeric_limits<double>::quiet_NaN();
+
+  friend bool operator==(const Curve_location&, const Curve_location&) = default;
+};
+
+}  // namespace curvebench::geometry
