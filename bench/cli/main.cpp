@@ -6,12 +6,19 @@
 
 #include "bench/cli/graph_command.h"
 #include "bench/cli/list_command.h"
+#include "bench/cli/measure_command.h"
+#include "bench/cli/perturb_commands.h"
+#include "bench/cli/sample_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"curvebench: planar curve reconstruction on exact geometry"};
   app.require_subcommand(1);
   curvebench::cli::add_graph_command(app);
   curvebench::cli::add_list_command(app);
+  curvebench::cli::add_sample_command(app);
+  curvebench::cli::add_noise_command(app);
+  curvebench::cli::add_outliers_command(app);
+  curvebench::cli::add_measure_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

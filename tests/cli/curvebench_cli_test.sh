@@ -46,5 +46,30 @@ done
 check "the grid's Delaunay triangulation has 16 edges" test "$(wc -l <"$work/delaunay.edges")" -eq 16
 check "the grid's Gabriel graph is its 12 unit edges" test "$(wc -l <"$work/gabriel.edges")" -eq 12
 
+# Sampling and measuring against closed forms: 12 equally spaced points on a unit circle
+# form a sampling with epsilon = 2 sin(pi / 24), attained at arc midpoints, and
+# uniformity 1; the safe sampler's measured epsilon stays below its target.
+json_number() { sed -n "s/^  \"$1\": \([-0-9.e+]*\),\{0,1\}$/\1/p" "$2"; }
+close_to() { awk -v a="$1" -v b="$2" -v tol="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= tol) }'; }
+"$curvebench" sample --curve circle:r=1 --uniform 12 -o "$work/circle" >/dev/null
+"$curvebench" measure --curve circle:r=1 -i "$work/circle.xy" >"$work/circle.json"
+check "12 points on a circle: 12 edges" test "$(wc -l <"$work/circle.edges")" -eq 12
+check "12 points on a circle: epsilon = 2 sin(pi/24)" \
+  close_to "$(json_number epsilon "$work/circle.json")" 0.2610523844401031 1e-3
+check "12 points on a circle: uniformity 1" close_to "$(json_number uniformity "$work/circle.json")" 1 1e-9
+"$curvebench" sample --curve ellipse:a=3,b=1 --epsilon 0.25 --safe -o "$work/ellipse" --svg >/dev/null
+"$curvebench" measure --curve ellipse:a=3,b=1 -i "$work/ellipse.xy" >"$work/ellipse.json"
+check "safe sampling measures at most its epsilon" \
+  awk -v e="$(json_number epsilon "$work/ellipse.json")" 'BEGIN { exit !(e > 0.2 && e <= 0.25) }'
+check "the sample picture is written" grep -q "<svg" "$work/ellipse.svg"
+"$curvebench" outliers -i "$work/ellipse.xy" --percent 10 --seed 3 -o "$work/outliers" >/dev/null
+check "outliers are labelled" test "$(grep -c outlier "$work/outliers.labels")" -eq \
+  "$(awk -v n="$(wc -l <"$work/ellipse.xy")" 'BEGIN { printf "%d", n / 10 + 0.5 }')"
+"$curvebench" noise -i "$work/ellipse.xy" --uniform 0.01 --seed 3 -o "$work/noisy1" >/dev/null
+"$curvebench" noise -i "$work/ellipse.xy" --uniform 0.01 --seed 3 -o "$work/noisy2" >/dev/null
+check "same seed, same bytes" cmp -s "$work/noisy1.xy" "$work/noisy2.xy"
+"$curvebench" sample --curve no-such-curve --uniform 5 -o "$work/x" 2>"$work/err"
+check "a bad curve spec is a one-line error" test "$?" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
+
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed"
 exit $((failures > 0))

@@ -1,0 +1,75 @@
+#include "bench/cli/sample_command.h"
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "bench/cli/sample_files.h"
+#include "geometry/curve_spec.h"
+#include "geometry/sampling.h"
+#include "geometry/sampling_noise.h"
+
+namespace curvebench::cli {
+namespace {
+
+struct Sample_options {
+  std::string curve;
+  std::optional<double> epsilon, rho;
+  std::optional<std::size_t> uniform, random;
+  bool safe = false;
+  std::optional<double> minimum_lfs, uniform_noise, lfs_noise, outliers;
+  std::uint64_t seed = 0;
+  std::filesystem::path base;
+  bool svg = false;
+};
+
+geometry::Sample draw(const Sample_options& o, const geometry::Local_feature_size& lfs) {
+  const double floor = o.minimum_lfs.value_or(geometry::default_minimum_lfs(lfs));
+  if (o.epsilon) return (o.safe ? geometry::safe_epsilon_sampling : geometry::epsilon_sampling)(lfs, *o.epsilon, floor);
+  if (o.rho) return geometry::rho_sampling(lfs, *o.rho, floor);
+  if (o.uniform) return geometry::uniform_sampling(lfs, *o.uniform);
+  return geometry::random_sampling(lfs, *o.random, o.seed);
+}
+
+void run_sample(const Sample_options& o) {
+  const geometry::Local_feature_size lfs(geometry::make_curve(o.curve));
+  geometry::Sample sample = draw(o, lfs);
+  // Independent streams for the noise and the outliers, both derived from --seed.
+  if (o.uniform_noise) sample = geometry::with_uniform_noise(std::move(sample), *o.uniform_noise, o.seed + 1);
+  if (o.lfs_noise) sample = geometry::with_lfs_noise(lfs, std::move(sample), *o.lfs_noise, o.seed + 2);
+  if (o.outliers) sample = geometry::with_outliers(std::move(sample), *o.outliers, o.seed + 3);
+  write_sample(o.base, sample);
+  if (o.svg) write_sample_picture(std::filesystem::path(o.base) += ".svg", lfs, sample);
+  std::cout << o.base.string() << ".xy: " << sample.size() << " points, " << sample.edges.size() << " edges";
+  if (!sample.floored.empty())
+    std::cout << ", " << sample.floored.size() << " spaced by the lfs floor " << sample.minimum_lfs
+              << " (near sharp points)";
+  std::cout << '\n';
+}
+
+}  // namespace
+
+void add_sample_command(CLI::App& app) {
+  auto o = std::make_shared<Sample_options>();
+  CLI::App* command = app.add_subcommand("sample", "Sample a curve: points, ground-truth edges and lfs");
+  command->add_option("--curve", o->curve, "Curve spec: circle:r=1, ellipse:a=2,b=1, superellipse:a=1,b=1,n=4, "
+                                           "fourier:seed=7, corner:angle=30, svg:FILE, glyph:[FONT:]CHAR")
+      ->required();
+  auto* how = command->add_option_group("sampler", "exactly one sampler");
+  how->add_option("--epsilon", o->epsilon, "epsilon-sampling by the survey's greedy walk");
+  how->add_option("--rho", o->rho, "HNN-Crust's rho-sampling");
+  how->add_option("--uniform", o->uniform, "N points at equal arc-length steps");
+  how->add_option("--random", o->random, "N points uniform in arc length (--seed)");
+  how->require_option(1);
+  command->add_flag("--safe", o->safe, "with --epsilon: guarantee the measured epsilon stays below E");
+  command->add_option("--min-lfs", o->minimum_lfs, "lfs floor near sharp points (default 1e-3 of the bbox diagonal)");
+  command->add_option("--uniform-noise", o->uniform_noise, "add uniform noise of extent DELTA x bbox diagonal");
+  command->add_option("--lfs-noise", o->lfs_noise, "add noise along the normal, uniform in [-DELTA, DELTA] x lfs");
+  command->add_option("--outliers", o->outliers, "add PERCENT outliers uniform in the bounding box");
+  command->add_option("--seed", o->seed, "seed of every random choice")->capture_default_str();
+  command->add_option("-o,--output", o->base, "write BASE.xy, BASE.edges, BASE.lfs, BASE.labels")->required();
+  command->add_flag("--svg", o->svg, "also draw curve, medial axis and samples to BASE.svg");
+  command->callback([o] { run_sample(*o); });
+}
+
+}  // namespace curvebench::cli
