@@ -129,6 +129,8 @@ std::vector<double> Curve_component::corners(double angle) const {
 }
 
 std::vector<Point> Curve_component::polyline(double tolerance) const {
+  // Below the rounding noise of the coordinates the refinement would never stop.
+  tolerance = std::max(tolerance, 1e-12 * length());
   std::vector<Point> points;
   // Split each piece in 8, then halve a step while its midpoint strays from the chord.
   const auto refine = [&](const Curve_piece& piece, double t0, double t1, auto& self, int depth) -> void {

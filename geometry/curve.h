@@ -55,8 +55,8 @@ class Curve_component {
   // Parameters of the joins where the unit tangent turns by more than `angle` radians.
   std::vector<double> corners(double angle = 1e-6) const;
 
-  // Points along the component, each chord within `tolerance` of the curve; a closed
-  // component does not repeat its first point.
+  // Points along the component, each chord within `tolerance` (at least 1e-12 of the
+  // length) of the curve; a closed component does not repeat its first point.
   std::vector<Point> polyline(double tolerance) const;
 
  private:
@@ -82,7 +82,10 @@ struct Curve {
 class Line_segment final : public Curve_piece {
  public:
   Line_segment(const Point& source, const Point& target) : source_(source), target_(target) {}
-  Point point(double t) const override { return source_ + t * (target_ - source_); }
+  // Blended so that t = 0 and t = 1 give the end points bit-exactly.
+  Point point(double t) const override {
+    return CGAL::ORIGIN + ((1 - t) * (source_ - CGAL::ORIGIN) + t * (target_ - CGAL::ORIGIN));
+  }
   Vector derivative(double) const override { return target_ - source_; }
   Vector second_derivative(double) const override { return {0, 0}; }
 
