@@ -58,6 +58,10 @@ enum class Beta_region {
 // The conditions are written as polynomials: with u = p - r, v = q - r, the angle prq
 // exceeds theta (sin theta = 1/beta) iff u.v <= 0 or (u.v)^2 < (beta^2 - 1)(u x v)^2.
 inline bool blocks(const Point& p, const Point& q, const Point& r, double beta, Beta_region region) {
+  // The relative neighbourhood graph's lune contains the closed diametral disk (minus p
+  // and q): two distance comparisons decide, on the hottest path of RNG and EMST laws.
+  if (beta == 2 && region == Beta_region::lune)
+    return compare_lengths(r, p, p, q) == CGAL::POSITIVE && compare_lengths(r, q, p, q) == CGAL::POSITIVE;
   using geometry::cross, geometry::difference, geometry::dot, geometry::exact_sign, geometry::squared_length;
   // (p - r).(q - r) = (|rp|^2 + |rq|^2 - |pq|^2) / 2: the angle at r as a comparison of
   // sums of squares, which the cheap filter decides.
@@ -85,8 +89,6 @@ inline bool blocks(const Point& p, const Point& q, const Point& r, double beta, 
              return (NT(beta) * NT(beta) - NT(1)) * cross(u, v) * cross(u, v) - dot(u, v) * dot(u, v);
            }) == CGAL::POSITIVE;
   }
-  if (beta == 2)  // the relative neighbourhood graph: two distance comparisons
-    return compare_lengths(r, p, p, q) == CGAL::POSITIVE && compare_lengths(r, q, p, q) == CGAL::POSITIVE;
   // r is inside the disk centred at p + beta/2 (q - p) through p iff |r-p|^2 < beta (r-p).(q-p).
   const auto inside_disk_through = [&](const Point& a, const Point& b) {
     return exact_sign([&]<class NT>(std::type_identity<NT>) {

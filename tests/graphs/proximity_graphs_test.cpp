@@ -110,20 +110,12 @@ RC_GTEST_PROP(RelativeNeighborhoodGraph, EqualsBruteForce, ()) {
   RC_ASSERT(edges_of(relative_neighborhood_graph(points)) == testing::brute_force_relative_neighborhood_graph(points));
 }
 
-RC_GTEST_PROP(BetaSkeleton, LuneBasedEqualsBruteForce, ()) {
+RC_GTEST_PROP(BetaSkeleton, EqualsBruteForceForBothRegions, ()) {
   const auto points = *point_sets(12);
   const double beta = *beta_values;
-  RC_TAG(beta);
-  RC_ASSERT(edges_of(beta_skeleton(points, beta, Beta_region::lune)) ==
-            testing::brute_force_beta_skeleton(points, beta, Beta_region::lune));
-}
-
-RC_GTEST_PROP(BetaSkeleton, CircleBasedEqualsBruteForce, ()) {
-  const auto points = *point_sets(12);
-  const double beta = *beta_values;
-  RC_TAG(beta);
-  RC_ASSERT(edges_of(beta_skeleton(points, beta, Beta_region::circle)) ==
-            testing::brute_force_beta_skeleton(points, beta, Beta_region::circle));
+  const Beta_region region = *rc::gen::element(Beta_region::lune, Beta_region::circle);
+  RC_TAG(beta, region == Beta_region::lune ? "lune" : "circle");
+  RC_ASSERT(edges_of(beta_skeleton(points, beta, region)) == testing::brute_force_beta_skeleton(points, beta, region));
 }
 
 RC_GTEST_PROP(ProximityGraphs, ContainmentChainAndBetaIdentities, ()) {
