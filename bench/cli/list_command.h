@@ -1,5 +1,5 @@
-// `curvebench list graphs [--names]`: what the tool can build, as a table for people
-// or one name per line for scripts.
+// `curvebench list [algorithms|graphs] [--names]`: what the tool can run, as a table for
+// people or one name per line for scripts.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -5,9 +5,12 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/cli/graph_command.h"
+#include "bench/cli/image_command.h"
 #include "bench/cli/list_command.h"
 #include "bench/cli/measure_command.h"
 #include "bench/cli/perturb_commands.h"
+#include "bench/cli/rate_command.h"
+#include "bench/cli/reconstruct_command.h"
 #include "bench/cli/sample_command.h"
 
 int main(int argc, char** argv) {
@@ -15,10 +18,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   curvebench::cli::add_graph_command(app);
   curvebench::cli::add_list_command(app);
+  curvebench::cli::add_reconstruct_command(app);
+  curvebench::cli::add_rate_command(app);
   curvebench::cli::add_sample_command(app);
   curvebench::cli::add_noise_command(app);
   curvebench::cli::add_outliers_command(app);
   curvebench::cli::add_measure_command(app);
+  curvebench::cli::add_rasterize_command(app);
+  curvebench::cli::add_image_sample_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

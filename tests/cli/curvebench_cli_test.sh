@@ -71,5 +71,53 @@ check "same seed, same bytes" cmp -s "$work/noisy1.xy" "$work/noisy2.xy"
 "$curvebench" sample --curve no-such-curve --uniform 5 -o "$work/x" 2>"$work/err"
 check "a bad curve spec is a one-line error" test "$?" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
 
+# The survey's image pipeline: a rasterized circle is a white disk in a P5 file; its
+# boundary samples form one cycle (as many edges as points), in pixel centres or, from
+# --curve, near the curve itself; the same seed gives the same bytes; a malformed image or
+# an open curve is a one-line error.
+byte_at() { od -An -tu1 -j "$2" -N1 "$1" | tr -d ' '; }
+"$curvebench" rasterize --curve circle:r=1 --resolution 64 -o "$work/disk.pgm" >/dev/null
+check "rasterize writes a 64 x 64 P5 image" test "$(head -c 13 "$work/disk.pgm" | tr '\n' ' ')" = "P5 64 64 255 "
+check "the disk's centre is white" test "$(byte_at "$work/disk.pgm" $((13 + 32 * 64 + 32)))" -eq 255
+check "the image's corner is black" test "$(byte_at "$work/disk.pgm" 13)" -eq 0
+"$curvebench" image-sample -i "$work/disk.pgm" --radius 4 --seed 5 -o "$work/disk" >/dev/null
+check "image-sample of a disk: more than 10 points" test "$(wc -l <"$work/disk.xy")" -gt 10
+check "image-sample of a disk: one cycle" test "$(wc -l <"$work/disk.edges")" -eq "$(wc -l <"$work/disk.xy")"
+check "image-sample: points are pixel centres" awk '{ if ($1 * 2 != int($1 * 2) || $1 == int($1)) exit 1 }' "$work/disk.xy"
+"$curvebench" image-sample -i "$work/disk.pgm" --radius 4 --seed 5 -o "$work/disk2" >/dev/null
+check "image-sample: same seed, same bytes" cmp -s "$work/disk.xy" "$work/disk2.xy"
+"$curvebench" image-sample --curve ellipse:a=2,b=1 --resolution 200 --radius 5 -o "$work/pixels" --svg >/dev/null
+check "image-sample --curve: points within 0.05 of the ellipse" \
+  awk '{ d = sqrt($1 * $1 / 4 + $2 * $2) - 1; if (d < -0.05 || d > 0.05) exit 1 }' "$work/pixels.xy"
+check "image-sample --svg draws a picture" grep -q "<svg" "$work/pixels.svg"
+printf 'P2\n2 2\n255\n0 1\n2 x\n' >"$work/bad.pgm"
+"$curvebench" image-sample -i "$work/bad.pgm" --radius 2 -o "$work/x" 2>"$work/err"
+check "a malformed image exits with status 2" test "$?" -eq 2
+check "a malformed image is one line naming FILE:LINE" \
+  test "$(wc -l <"$work/err")" -eq 1 -a -n "$(grep "^curvebench: $work/bad.pgm:5: " "$work/err")"
+printf '0 0\n1 0\n1 1\n' >"$work/open.xy"
+printf '0 1\n1 2\n' >"$work/open.edges"
+"$curvebench" rasterize --curve "truth:$work/open.xy:$work/open.edges" --resolution 50 -o "$work/x.pgm" 2>"$work/err"
+check "rasterizing an open curve is a one-line error" test "$?" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
+"$curvebench" image-sample --curve circle:r=1 --radius 2 -o "$work/x" 2>/dev/null
+status=$?
+check "image-sample --curve without --resolution is a usage error" test "$status" -ne 0 -a "$status" -lt 128
+
+# Reconstruction: every listed algorithm runs; NN-Crust closes 12 points of a circle into
+# their 12-cycle, edges in input indices, with a duplicate merged; a bad parameter is a
+# one-line error.
+check "list names the registered algorithms" test "$("$curvebench" list --names | wc -l)" -ge 9
+awk 'BEGIN { for (k = 0; k < 12; ++k) printf "%.17g %.17g\n", cos(k * 3.14159265358979 / 6), sin(k * 3.14159265358979 / 6);
+             printf "%.17g %.17g\n", 1, 0 }' >"$work/ring.xy"
+for algorithm in $("$curvebench" list --names); do
+  "$curvebench" reconstruct -q -a "$algorithm" -i "$work/ring.xy" -o "$work/ring-$algorithm.edges" 2>/dev/null
+  check "$algorithm reconstructs a 13-line file" test $? -eq 0
+done
+check "nn-crust: the 12-cycle" diff <(awk 'BEGIN { for (k = 0; k < 11; ++k) print k, k + 1; print 0, 11 }' | sort -n -k1,1 -k2,2) \
+  "$work/ring-nn-crust.edges"
+head -12 "$work/ring.xy" >"$work/ring12.xy"
+"$curvebench" reconstruct -a beta-skeleton -p beta=0.5 -i "$work/ring12.xy" -o "$work/x.edges" 2>"$work/err"
+check "an out-of-range parameter is a one-line error" test "$?" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
+
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed"
 exit $((failures > 0))

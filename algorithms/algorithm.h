@@ -1,0 +1,69 @@
+// A reconstruction algorithm as the registry describes it: how to call it, its
+// parameters, its capability row from the survey's Table 1 ("Algorithms grouped by
+// categories, with their input and output capabilities") and its proven sampling
+// condition from the survey's table in "Guarantees as Sampling Conditions".
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "algorithms/parameters.h"
+#include "geometry/edge.h"
+#include "geometry/kernel.h"
+
+namespace curvebench::algorithms {
+
+using geometry::Edge;
+using geometry::Point;
+
+// A curve as edges between points. `points` is empty when the edges index the input
+// points; an algorithm that moves or drops points (denoising, outlier removal) returns
+// its own points and the edges index those.
+struct Reconstruction {
+  std::vector<Edge> edges;  // each (i, j) with i < j, sorted, no repeats
+  std::vector<Point> points;
+};
+
+// Table 1's yes / no, and "only" (the EMST reconstructs only open curves).
+enum class Support { no, yes, only };
+
+struct Capabilities {
+  Support non_uniform = Support::no;  // input: non-uniform sampling
+  Support noise = Support::no;
+  Support outliers = Support::no;
+  Support manifold = Support::no;     // output: a manifold curve
+  Support open = Support::no;
+  Support multiple = Support::no;     // several components
+  Support sharp = Support::no;        // sharp corners
+  bool guarantee = false;              // a proven sampling condition
+  std::string_view time_complexity;
+};
+
+// The condition under which a manifold curve is provably reconstructed exactly. The
+// bounds are strict (epsilon < bound); unset means the paper states no such bound.
+struct Sampling_condition {
+  std::string_view statement;               // as the survey writes it, "none" if there is none
+  std::optional<double> epsilon_below;      // epsilon-sampling (Amenta, Bern)
+  std::optional<double> rho_below;          // HNN-Crust's reach-based rho-sampling
+  std::optional<double> corner_angle_above; // GathanG: sharp corners' opening angle, degrees
+};
+
+// Reconstructs from distinct points (the registry's reconstruct() merges duplicates
+// first), with checked parameter values.
+using Reconstruct = std::function<Reconstruction(std::span<const Point>, const Parameter_values&)>;
+
+struct Algorithm {
+  std::string_view name;       // as typed on the command line: "nn-crust"
+  std::string_view title;      // as the survey writes it: "NN-Crust"
+  std::string_view reference;  // authors and year of the paper
+  std::string_view category;   // the survey's group in Table 1: "Feature Size Criteria"
+  std::vector<Parameter> parameters;
+  Capabilities capabilities;
+  Sampling_condition condition;
+  Reconstruct reconstruct;
+};
+
+}  // namespace curvebench::algorithms

@@ -1,0 +1,16 @@
+// EMST reconstruction (de Figueiredo, Gomes 1994; survey, "Graph-Based
+// Reconstruction"): the Euclidean minimum spanning tree of a dense enough sample of an
+// open curve is the curve's polygon. One tree: it can never close a curve or separate two.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "algorithms/algorithm.h"
+
+namespace curvebench::algorithms {
+
+std::vector<Edge> emst_reconstruction(std::span<const Point> points);
+Algorithm emst_algorithm();
+
+}  // namespace curvebench::algorithms

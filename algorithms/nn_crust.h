@@ -1,0 +1,53 @@
+// NN-Crust (Dey, Kumar 1999, "A simple provable algorithm for curve reconstruction";
+// survey, "Feature Size Criteria Reconstruction"): connect every point p to its nearest
+// neighbour q, then to its nearest point s on the far side of p, angle qps > 90 degrees;
+// the union of these edges reconstructs every epsilon-sampling with epsilon < 1/3.
+//
+// The neighbours are those of the definition, over all points: nearest by exact squared
+// distance, ties to the smaller index. The paper looks for them among p's Delaunay
+// neighbours only, which is the same under its sampling condition but not for every input:
+// the nearest point behind p need not be a Delaunay neighbour of p (nn_crust_test.cpp has
+// one). Here the Delaunay triangulation is the search structure that finds them fast: each
+// point's neighbours, then a certificate that nothing closer hides beyond them (or a
+// search outwards when the certificate fails).
+//
+// The same search serves HNN-Crust (hnn_crust.h), whose half neighbour lies beyond the
+// bisector of pq instead.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "algorithms/algorithm.h"
+
+namespace curvebench::algorithms {
+
+// Where p's second ("half") neighbour may lie, given its nearest neighbour q: an open
+// half-plane, tested exactly.
+enum class Half_plane {
+  behind_p,       // NN-Crust: (s - p).(q - p) < 0, i.e. the angle qps exceeds 90 degrees
+  beyond_bisector // HNN-Crust: |ps| < |qs|, the side of pq's bisector that holds p
+};
+
+inline constexpr std::uint32_t no_neighbor = std::numeric_limits<std::uint32_t>::max();
+
+struct Nearest_and_half_neighbor {
+  std::uint32_t nearest = no_neighbor;  // none only for a lone point
+  std::uint32_t half = no_neighbor;     // none if the half-plane holds no point
+};
+
+// For every point p (distinct points), its nearest neighbour q and its half neighbour: the
+// nearest point in `half_plane`. "Nearest" is by exact squared distance, ties to the
+// smaller index, over all points. Throws std::invalid_argument for equal points or a
+// non-finite coordinate.
+std::vector<Nearest_and_half_neighbor> nearest_and_half_neighbors(std::span<const Point> points,
+                                                                   Half_plane half_plane);
+
+// The NN-Crust edges: {p, nearest(p)} and {p, half(p)} for every p (behind_p), canonical
+// (i < j, sorted, no repeats).
+std::vector<Edge> nn_crust_reconstruction(std::span<const Point> points);
+Algorithm nn_crust_algorithm();
+
+}  // namespace curvebench::algorithms

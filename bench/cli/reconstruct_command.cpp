@@ -1,0 +1,75 @@
+#include "bench/cli/reconstruct_command.h"
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "algorithms/registry.h"
+#include "bench/cli/input.h"
+#include "geometry/edge_io.h"
+#include "geometry/point_io.h"
+#include "geometry/svg_picture.h"
+
+namespace curvebench::cli {
+namespace {
+
+struct Reconstruct_options {
+  std::string algorithm;
+  std::string parameters;
+  std::filesystem::path input, output, svg;
+  bool quiet = false;
+};
+
+void run_reconstruct(const Reconstruct_options& options) {
+  const algorithms::Algorithm& algorithm = *algorithms::find_algorithm(options.algorithm);
+  const auto values = algorithms::Parameter_values::parse(options.parameters);
+  const geometry::PointSet points = load_point_set(options.input);
+  const auto start = std::chrono::steady_clock::now();
+  const algorithms::Reconstruction result = algorithms::reconstruct(algorithm, points.points(), values);
+  const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+
+  // An algorithm that moves or drops points indexes its own points: write them beside.
+  const bool own_points = !result.points.empty();
+  if (own_points) geometry::write_points(options.output.string() + ".xy", result.points);
+  geometry::write_edges(options.output, own_points ? result.edges : to_input_indices(points, result.edges));
+  if (!options.quiet)
+    std::cerr << algorithm.name << ": " << points.size() << " points, " << result.edges.size() << " edges, "
+              << elapsed.count() << " ms\n";
+  if (!options.svg.empty()) {
+    geometry::SvgPicture picture(own_points ? std::span<const geometry::Point>(result.points) : points.points());
+    picture.set_title(std::string(algorithm.title) + " of " + options.input.filename().string() + ": " +
+                      std::to_string(points.size()) + " points, " + std::to_string(result.edges.size()) + " edges");
+    picture.add_edges(result.edges);
+    picture.add_points();
+    picture.write(options.svg);
+  }
+}
+
+}  // namespace
+
+void add_reconstruct_command(CLI::App& app) {
+  auto options = std::make_shared<Reconstruct_options>();
+  std::vector<std::string> names;
+  for (const auto& algorithm : algorithms::registry()) names.emplace_back(algorithm.name);
+
+  CLI::App* command = app.add_subcommand("reconstruct", "Reconstruct a curve from a point file");
+  command->add_option("-a,--algorithm", options->algorithm, "Algorithm name (see `curvebench list`)")
+      ->required()
+      ->check(CLI::IsMember(names));
+  command->add_option("-p,--parameters", options->parameters,
+                      "Parameter values as name=value,... (defaults in `curvebench list`)");
+  command->add_option("-i,--input", options->input, "Point file (x y per line, or any format of data/README.md)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", options->output,
+                      "Edge list to write: 'i j' per line, i < j, 0-based indices of the input file's points "
+                      "(a duplicate point is merged into its first occurrence)")
+      ->required();
+  command->add_option("--svg", options->svg, "Also draw the reconstruction to this SVG picture");
+  command->add_flag("-q,--quiet", options->quiet, "Do not print the summary line to stderr");
+  command->callback([options] { run_reconstruct(*options); });
+}
+
+}  // namespace curvebench::cli

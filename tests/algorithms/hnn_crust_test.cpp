@@ -1,0 +1,263 @@
+// HNN-Crust (algorithms/hnn_crust.h) against a brute force of its definition over ALL
+// pairs of points, in rationals (CGAL::Gmpq): each point's nearest neighbour q (ties to
+// the smaller index) and half neighbour, the nearest point s with |ps| < |qs|; an edge is
+// kept when both ends chose it. Plus hand cases: a half neighbour that is NOT a Delaunay
+// neighbour, regular polygons, open curves (a path whose two end points keep one edge),
+// tiny and collinear input. The epsilon < 0.47 theorem is the registry's property
+// (proven_conditions_test.cpp).
+#include <gtest/gtest.h>
+
+#include <rapidcheck/gtest.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "algorithms/hnn_crust.h"
+#include "algorithms/nn_crust.h"
+#include "algorithms/registry.h"
+#include "geometry/analytic_curves.h"
+#include "geometry/local_feature_size.h"
+#include "geometry/sampling.h"
+#include "graphs/delaunay_triangulation.h"
+#include "tests/support/point_generators.h"
+
+namespace curvebench::algorithms {
+namespace {
+
+using Edges = std::vector<Edge>;
+using Q = CGAL::Gmpq;
+
+// ------------------------------------------------------------ brute force in rationals
+
+struct Q_point {
+  Q x, y;
+};
+Q squared_distance(const Q_point& a, const Q_point& b) {
+  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
+}
+
+// The first point by (squared distance to p, index) among those `eligible`; no_neighbor if none.
+template <class Eligible>
+std::uint32_t brute_nearest(const std::vector<Q_point>& points, std::size_t p, Eligible eligible) {
+  std::uint32_t best = no_neighbor;
+  Q best_distance;
+  for (std::size_t s = 0; s < points.size(); ++s) {
+    if (s == p || !eligible(s)) continue;
+    const Q d = squared_distance(points[p], points[s]);
+    if (best == no_neighbor || d < best_distance) {  // ascending s: equal keeps the smaller index
+      best = std::uint32_t(s);
+      best_distance = d;
+    }
+  }
+  return best;
+}
+
+std::vector<Nearest_and_half_neighbor> brute_neighbors(std::span<const Point> input) {
+  std::vector<Q_point> points;
+  for (const Point& p : input) points.push_back({Q(p.x()), Q(p.y())});
+  std::vector<Nearest_and_half_neighbor> result(points.size());
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const std::uint32_t q = brute_nearest(points, p, [](std::size_t) { return true; });
+    result[p].nearest = q;
+    if (q == no_neighbor) continue;
+    result[p].half = brute_nearest(points, p, [&](std::size_t s) {
+      return squared_distance(points[s], points[p]) < squared_distance(points[s], points[q]);
+    });
+  }
+  return result;
+}
+
+Edges brute_hnn_crust(std::span<const Point> points) {
+  const auto neighbors = brute_neighbors(points);
+  const auto chose = [&](std::size_t a, std::size_t b) { return neighbors[a].nearest == b || neighbors[a].half == b; };
+  Edges edges;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      if (chose(i, j) && chose(j, i)) edges.emplace_back(i, j);
+  return edges;
+}
+
+void expect_matches_brute_force(std::span<const Point> points) {
+  const auto expected = brute_neighbors(points);
+  const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector);
+  ASSERT_EQ(found.size(), expected.size());
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    EXPECT_EQ(found[p].nearest, expected[p].nearest) << "point " << p;
+    EXPECT_EQ(found[p].half, expected[p].half) << "point " << p;
+  }
+  EXPECT_EQ(hnn_crust_reconstruction(points), brute_hnn_crust(points));
+}
+
+std::vector<Point> regular_polygon(int k, double radius, double phase, Point centre = {0, 0}) {
+  std::vector<Point> points;
+  for (int i = 0; i < k; ++i) {
+    const double t = phase + 2 * std::numbers::pi * i / k;
+    points.emplace_back(centre.x() + radius * std::cos(t), centre.y() + radius * std::sin(t));
+  }
+  return points;
+}
+
+Edges path(std::size_t k) {
+  Edges edges;
+  for (std::size_t i = 0; i + 1 < k; ++i) edges.emplace_back(i, i + 1);
+  return edges;
+}
+
+Edges cycle(std::size_t k) {
+  Edges edges = path(k);
+  edges.emplace_back(0, k - 1);
+  std::ranges::sort(edges);
+  return edges;
+}
+
+std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
+  std::vector<std::size_t> degree(n, 0);
+  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
+  return degree;
+}
+
+// ------------------------------------------------------------ properties
+
+RC_GTEST_PROP(HnnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
+  const std::vector<Point> points = *testing::point_sets(40);
+  const auto expected = brute_neighbors(points);
+  const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector);
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    RC_ASSERT(found[p].nearest == expected[p].nearest);
+    RC_ASSERT(found[p].half == expected[p].half);
+  }
+  const Edges edges = hnn_crust_reconstruction(points);
+  RC_ASSERT(edges == brute_hnn_crust(points));
+  for (const std::size_t degree : degrees(edges, points.size())) RC_ASSERT(degree <= 2u);
+}
+
+RC_GTEST_PROP(HnnCrust, MatchesTheDefinitionOverAllPairsOnClusteredInput, ()) {
+  const auto seed = *rc::gen::inRange<std::uint32_t>(0, 1u << 30);
+  const int n = *rc::gen::inRange(3, 150);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<Point> points;
+  for (int c = 0; c < 1 + n / 20; ++c) {
+    const double scale = std::ldexp(1.0, int(random() % 12) - 6);
+    const Point centre(unit(random), unit(random));
+    for (int i = 0; i < 20 && int(points.size()) < n; ++i)
+      points.emplace_back(centre.x() + scale * unit(random), centre.y() + scale * unit(random) * 0.1);
+  }
+  points = testing::distinct(points);
+  const auto expected = brute_neighbors(points);
+  const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector);
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    RC_ASSERT(found[p].nearest == expected[p].nearest);
+    RC_ASSERT(found[p].half == expected[p].half);
+  }
+  RC_ASSERT(hnn_crust_reconstruction(points) == brute_hnn_crust(points));
+}
+
+// ------------------------------------------------------------ hand cases
+
+// p's nearest neighbour is q = (1, 0); the nearest point closer to p than to q is
+// r = (0.4, 10), but x and y see pr under angles summing to more than 180 degrees, so r is
+// not a Delaunay neighbour of p.
+TEST(HnnCrust, FindsAHalfNeighbourThatIsNotADelaunayNeighbour) {
+  const std::vector<Point> points{{0, 0}, {1, 0}, {0.4, 10}, {0.55, 1}, {-8, 8}};
+  const graphs::Delaunay_triangulation dt(points);
+  ASSERT_EQ(std::ranges::count(dt.neighbors(0), graphs::Vertex(2)), 0) << "the case needs pr to be non-Delaunay";
+  const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector);
+  EXPECT_EQ(found[0].nearest, 1u);
+  EXPECT_EQ(found[0].half, 2u);
+  expect_matches_brute_force(points);
+}
+
+TEST(HnnCrust, ReconstructsRegularPolygonsAsCycles) {
+  for (int k = 4; k <= 40; ++k)
+    for (const double phase : {0.0, 0.3, 1.0}) {
+      const std::vector<Point> points = regular_polygon(k, 1 + k, phase, {-2.0, k * 0.1});
+      EXPECT_EQ(hnn_crust_reconstruction(points), cycle(k)) << k << " " << phase;
+      expect_matches_brute_force(points);
+    }
+  // The exact square: every nearest neighbour is a tie, broken by index.
+  EXPECT_EQ(hnn_crust_reconstruction(std::vector<Point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}), cycle(4));
+}
+
+// An open arc: an end point's half-plane holds no point, so the end point keeps one edge and
+// the curve is the path. (Beyond 180 degrees the two ends lie in each other's half-planes
+// and choose each other: HNN-Crust closes such an arc, as the definition says.)
+TEST(HnnCrust, ReconstructsOpenCurvesAsPathsWithTwoEndPoints) {
+  for (const double degrees_spanned : {60.0, 120.0, 180.0}) {
+    for (const int k : {5, 12, 40}) {
+      std::vector<Point> arc;
+      for (int i = 0; i < k; ++i) {
+        const double t = degrees_spanned * std::numbers::pi / 180 * i / (k - 1);
+        arc.emplace_back(3 * std::cos(t) + 1, 3 * std::sin(t) - 2);
+      }
+      const Edges edges = hnn_crust_reconstruction(arc);
+      EXPECT_EQ(edges, path(k)) << degrees_spanned << " degrees, " << k << " points";
+      const auto degree = degrees(edges, arc.size());
+      EXPECT_EQ(std::ranges::count(degree, 1u), 2);
+      expect_matches_brute_force(arc);
+    }
+  }
+  // A wave, sampled unevenly (denser where it bends), given in shuffled order.
+  std::vector<Point> wave;
+  for (int i = 0; i < 60; ++i) {
+    const double x = 6.0 * i / 59 + 0.02 * std::sin(3.0 * i);
+    wave.emplace_back(x, 0.5 * std::sin(x));
+  }
+  std::vector<std::size_t> order(wave.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = (i * 37) % order.size();
+  std::vector<Point> shuffled;
+  for (const std::size_t i : order) shuffled.push_back(wave[i]);
+  Edges expected;
+  std::vector<std::size_t> position(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) position[order[k]] = k;
+  for (std::size_t i = 0; i + 1 < wave.size(); ++i)
+    expected.emplace_back(std::min(position[i], position[i + 1]), std::max(position[i], position[i + 1]));
+  std::ranges::sort(expected);
+  EXPECT_EQ(hnn_crust_reconstruction(shuffled), expected);
+  expect_matches_brute_force(shuffled);
+}
+
+TEST(HnnCrust, TinyAndCollinearInput) {
+  EXPECT_TRUE(hnn_crust_reconstruction(std::vector<Point>{}).empty());
+  EXPECT_TRUE(hnn_crust_reconstruction(std::vector<Point>{{1, 2}}).empty());
+  EXPECT_EQ(hnn_crust_reconstruction(std::vector<Point>{{0, 0}, {3, 4}}), (Edges{{0, 1}}));
+  const std::vector<Point> line{{3, 3}, {0, 0}, {1, 1}, {-2, -2}, {2, 2}};
+  EXPECT_EQ(hnn_crust_reconstruction(line), (Edges{{0, 4}, {1, 2}, {1, 3}, {2, 4}}));
+  expect_matches_brute_force(line);
+  expect_matches_brute_force(std::vector<Point>{{0, 0}, {1, 0}, {0, 1}});
+  EXPECT_THROW(hnn_crust_reconstruction(std::vector<Point>{{0, 0}, {1, 1}, {0, 0}}), std::invalid_argument);
+}
+
+TEST(HnnCrust, MatchesTheDefinitionOnCurveSamples) {
+  for (const std::uint64_t seed : {3u, 11u}) {
+    const geometry::Curve curve = geometry::random_fourier_curve(seed);
+    expect_matches_brute_force(geometry::uniform_sampling(geometry::Local_feature_size(curve), 800).points);
+  }
+  const geometry::Sample ellipse = geometry::uniform_sampling(geometry::Local_feature_size(geometry::ellipse(2, 1)), 300);
+  Edges truth = ellipse.edges;
+  for (auto& [i, j] : truth)
+    if (i > j) std::swap(i, j);
+  std::ranges::sort(truth);
+  EXPECT_EQ(hnn_crust_reconstruction(ellipse.points), truth);
+  expect_matches_brute_force(ellipse.points);
+}
+
+TEST(HnnCrust, IsRegisteredWithItsCondition) {
+  const Algorithm* algorithm = find_algorithm("hnn-crust");
+  ASSERT_NE(algorithm, nullptr);
+  EXPECT_EQ(algorithm->title, "HNN-Crust");
+  EXPECT_EQ(algorithm->condition.epsilon_below, 0.47);
+  EXPECT_EQ(algorithm->condition.rho_below, 0.9);
+  EXPECT_TRUE(algorithm->capabilities.guarantee);
+  const std::vector<Point> points = regular_polygon(9, 2, 0.1);
+  std::vector<Point> doubled = points;
+  doubled.insert(doubled.end(), points.begin(), points.end());
+  EXPECT_EQ(reconstruct(*algorithm, doubled).edges, cycle(9));
+}
+
+}  // namespace
+}  // namespace curvebench::algorithms

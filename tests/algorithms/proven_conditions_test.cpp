@@ -1,0 +1,48 @@
+// The survey's table "Sampling conditions" as properties: every registered algorithm with
+// a proven epsilon bound reconstructs exactly (edge set = ground truth) every smooth
+// closed curve, one to three components, safe-sampled at a measured epsilon below that
+// bound (tests/support/reconstruction_cases.h). A failure here is a finding about the
+// sampler, the lfs estimate or the algorithm, never a reason to loosen the bound.
+#include <gtest/gtest.h>
+
+#include <rapidcheck/gtest.h>
+
+#include <string>
+
+#include "algorithms/registry.h"
+#include "tests/support/reconstruction_cases.h"
+
+namespace curvebench::algorithms {
+namespace {
+
+std::vector<std::string> algorithms_with_an_epsilon_bound() {
+  std::vector<std::string> names;
+  for (const Algorithm& algorithm : registry())
+    if (algorithm.condition.epsilon_below) names.emplace_back(algorithm.name);
+  return names;
+}
+
+class Proven_condition : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Proven_condition, ReconstructsEverySafelySampledSmoothCurveExactly) {
+  const Algorithm& algorithm = *find_algorithm(GetParam());
+  const double bound = *algorithm.condition.epsilon_below;
+  const bool passed = rc::check(algorithm.title.data(), [&] {
+    const testing::Sampled_case input = *testing::safely_sampled_smooth_curves(bound);
+    RC_TAG(input.curve.components.size());
+    const Reconstruction result = reconstruct(algorithm, input.sample.points);
+    RC_ASSERT(result.edges == input.truth);
+  });
+  EXPECT_TRUE(passed);
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, Proven_condition, ::testing::ValuesIn(algorithms_with_an_epsilon_bound()),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Proven_condition);
+
+}  // namespace
+}  // namespace curvebench::algorithms
