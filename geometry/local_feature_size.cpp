@@ -1,6 +1,7 @@
 #include "geometry/local_feature_size.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -15,6 +16,7 @@ constexpr int initial_points_per_piece = 16;
 constexpr int maximum_splits_per_round = 16;  // an early estimate may be far off: refine it step by step
 constexpr int maximum_rounds = 200;
 constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr std::uint64_t unknown = 0xfff8'dead'beef'0001;  // a NaN that lfs never is
 
 double piece_count(const Curve_component& component) { return static_cast<double>(component.piece_count()); }
 
@@ -37,15 +39,31 @@ bool refine(const Curve_component& component, std::vector<double>& parameters, c
             double minimum_spacing) {
   std::vector<double> refined;
   const std::size_t chords = component.closed() ? parameters.size() : parameters.size() - 1;
+  // A chord's end is the next chord's start: its point and lfs are computed once.
+  struct End {
+    Point point;
+    double lfs = 0;
+    bool lfs_known = false;
+  };
+  const auto lfs_of = [&axis](End& end) {
+    if (!end.lfs_known) end.lfs = axis.distance(end.point), end.lfs_known = true;
+    return end.lfs;
+  };
+  End start;
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     refined.push_back(parameters[i]);
     if (i >= chords) continue;
     const double s0 = parameters[i], s1 = i + 1 < parameters.size() ? parameters[i + 1] : parameters[0] + piece_count(component);
-    const Point p = component.point(s0), q = component.point(s1);
-    const double chord = std::sqrt(CGAL::squared_distance(p, q));
-    if (chord <= minimum_spacing) continue;
+    if (i == 0) start = {component.point(s0)};
+    End end{component.point(s1)};
+    const double chord = std::sqrt(CGAL::squared_distance(start.point, end.point));
+    if (chord <= minimum_spacing) {
+      start = end;
+      continue;
+    }
     const double curvature = std::abs(component.curvature((s0 + s1) / 2));
-    const double local = std::min({axis.distance(p), axis.distance(q), curvature > 0 ? 1 / curvature : infinity});
+    const double local = std::min({lfs_of(start), lfs_of(end), curvature > 0 ? 1 / curvature : infinity});
+    start = end;
     const double pieces = std::min<double>(std::ceil(chord * density / local), maximum_splits_per_round);
     for (int k = 1; k < pieces; ++k) {
       const double s = s0 + (s1 - s0) * k / pieces;
@@ -112,12 +130,79 @@ Local_feature_size::Local_feature_size(const Curve& curve, Estimate estimate)
       bounding_box_diagonal_(estimate.bounding_box_diagonal),
       dense_parameters_(std::move(estimate.dense_parameters)),
       sharp_points_(std::move(estimate.sharp_points)),
-      medial_axis_(std::move(estimate.medial_axis)) {}
+      sharp_parameters_(curve.components.size()),
+      medial_axis_(std::move(estimate.medial_axis)) {
+  for (const Sharp_point& sharp : sharp_points_)
+    sharp_parameters_[sharp.location.component].push_back(sharp.location.parameter);
+  for (auto& parameters : sharp_parameters_) std::sort(parameters.begin(), parameters.end());
+  for (std::size_t c = 0; c < curve_.components.size(); ++c) {
+    const std::size_t gaps = curve_.components[c].closed() ? dense_parameters_[c].size()
+                                                           : std::max<std::size_t>(dense_parameters_[c].size(), 1) - 1;
+    auto& slots = cache_.emplace_back(std::make_unique<std::atomic<std::uint64_t>[]>(gaps * cached_subdivisions));
+    for (std::size_t i = 0; i < gaps * cached_subdivisions; ++i) slots[i].store(unknown, std::memory_order_relaxed);
+  }
+}
 
 double Local_feature_size::at(std::size_t component, double s) const {
+  std::atomic<std::uint64_t>* const slot = cached_at(component, s);
+  if (slot == nullptr) return uncached_at(component, s);
+  const std::uint64_t known = slot->load(std::memory_order_relaxed);
+  if (known != unknown) return std::bit_cast<double>(known);
+  const double value = uncached_at(component, s);
+  if (std::bit_cast<std::uint64_t>(value) != unknown) slot->store(std::bit_cast<std::uint64_t>(value), std::memory_order_relaxed);
+  return value;
+}
+
+// The slot of s if it is exactly a grid point knot + (next knot - knot) * k / 8 of two
+// consecutive dense parameters (as grid() computes it; for k = 2 j it is the same double
+// as grid()'s (next - knot) * j / 4), or null.
+std::atomic<std::uint64_t>* Local_feature_size::cached_at(std::size_t component, double s) const {
+  // Queries mostly go along the curve: try this thread's last gap (of whichever
+  // component: only compared, never trusted) and the next one before searching.
+  thread_local const double* last_parameters = nullptr;
+  thread_local std::size_t last_gap = 0;
+  if (component >= dense_parameters_.size()) return nullptr;
+  const std::vector<double>& dense = dense_parameters_[component];
+  if (dense.empty() || !(s >= dense.front())) return nullptr;
+  std::size_t i = last_gap;
+  if (last_parameters != dense.data() || !(i + 1 < dense.size() && dense[i] <= s)) {
+    i = static_cast<std::size_t>(std::upper_bound(dense.begin(), dense.end(), s) - dense.begin()) - 1;
+  } else if (!(s < dense[i + 1])) {
+    if (i + 2 < dense.size() && s < dense[i + 2])
+      ++i;
+    else
+      i = static_cast<std::size_t>(std::upper_bound(dense.begin() + i + 1, dense.end(), s) - dense.begin()) - 1;
+  }
+  last_parameters = dense.data(), last_gap = i;
+  const Curve_component& c = curve_.components[component];
+  if (i + 1 == dense.size() && !c.closed()) return nullptr;
+  const double knot = dense[i], next = i + 1 < dense.size() ? dense[i + 1] : dense.front() + piece_count(c);
+  const double gap = next - knot;
+  int k = 0;
+  if (s != knot) {
+    const double steps = (s - knot) / gap * cached_subdivisions;
+    if (!(steps >= 0.5 && steps < cached_subdivisions - 0.5)) return nullptr;
+    k = static_cast<int>(steps + 0.5);
+  }
+  if (std::bit_cast<std::uint64_t>(knot + gap * k / cached_subdivisions) != std::bit_cast<std::uint64_t>(s)) return nullptr;
+  return &cache_[component][i * cached_subdivisions + static_cast<std::size_t>(k)];
+}
+
+double Local_feature_size::uncached_at(std::size_t component, double s) const {
   const Curve_component& c = curve_.components.at(component);
-  for (const Sharp_point& sharp : sharp_points_)
-    if (sharp.location.component == component && same_parameter(c, s, sharp.location.parameter)) return 0;
+  // The sharp parameters t that same_parameter(c, s, t) could accept: within its
+  // tolerance of s, or of s -+ n on a closed component, widened far beyond rounding.
+  const std::vector<double>& sharp = sharp_parameters_[component];
+  if (!sharp.empty()) {
+    const double n = piece_count(c), window = 1e-12 * n + 1e-9 * (2 * n + std::abs(s));
+    const auto near = [&](double center) {
+      for (auto it = std::lower_bound(sharp.begin(), sharp.end(), center - window); it != sharp.end() && *it <= center + window;
+           ++it)
+        if (same_parameter(c, s, *it)) return true;
+      return false;
+    };
+    if (near(s) || (c.closed() && (near(s - n) || near(s + n)))) return 0;
+  }
   return at(c.point(s));
 }
 

@@ -30,6 +30,9 @@
 // lfs is exactly 0 there and tends to 0 linearly nearby; samplers floor it.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -58,7 +61,9 @@ class Local_feature_size {
   // lfs of a curve point p (for another point: its distance to the medial axis). 0 at a
   // sharp point; +infinity if the medial axis is empty (a straight open segment).
   double at(const Point& p) const { return medial_axis_.distance(p); }
-  // lfs of the point at parameter s of a component; exactly 0 at its sharp points.
+  // lfs of the point at parameter s of a component; exactly 0 at its sharp points. The
+  // values at the points of grid(component, s0, s1, k) for k = 1, 2, 4, 8 that lie between
+  // two dense parameters are kept once computed (safe from any number of threads).
   double at(std::size_t component, double s) const;
 
   const Medial_axis& medial_axis() const { return medial_axis_; }
@@ -78,11 +83,21 @@ class Local_feature_size {
   struct Estimate;
   Local_feature_size(const Curve& curve, Estimate estimate);
 
+  double uncached_at(std::size_t component, double s) const;
+  std::atomic<std::uint64_t>* cached_at(std::size_t component, double s) const;
+
   Curve curve_;
   double bounding_box_diagonal_ = 0;
   std::vector<std::vector<double>> dense_parameters_;
   std::vector<Sharp_point> sharp_points_;
+  std::vector<std::vector<double>> sharp_parameters_;  // of each component, sorted
   Medial_axis medial_axis_;
+  // at(component, s) at the points of every grid (the dense parameters' gaps cut in 8, or
+  // in 4 or 1: the same doubles), which the samplers and measures revisit many times:
+  // filled as they are asked for, the bits of the double or `unknown`. Threads may race to
+  // fill a slot; they write the same bits.
+  static constexpr int cached_subdivisions = 8;
+  std::vector<std::unique_ptr<std::atomic<std::uint64_t>[]>> cache_;
 };
 
 // distance / max(lfs, minimum_lfs), the ratio that epsilon and rho compare, without NaN:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -100,6 +101,14 @@ class Rho_step : Step {
 // grid point p standing for the curve within one step h of it: as distances and lfs (a
 // distance to the medial points) are 1-Lipschitz, min(|p u|, |p v|) + h < epsilon
 // (lfs(p) - h) covers them all.
+//
+// Incremental, with the same answers as testing every passed point against v: a point
+// covered by u is covered whatever v is (the test is monotone in the distance), so only
+// the others are kept; each of those gets a distance budget (a distance to v below which
+// its test holds) and a slack against a reference point r (a recent v): while |r v| is
+// within the slack, |p v| <= |p r| + |r v| is within the budget (with margins far above
+// the rounding of both sides) and the test needs no evaluation. A walk then evaluates a
+// few points per candidate instead of all of them.
 class Coverage_step : Step {
  public:
   static constexpr int grid_subdivisions = 8;
@@ -107,30 +116,79 @@ class Coverage_step : Step {
   using Step::Step;
   void start(double u) {
     from_ = last_ = point(u);
-    passed_.clear();
+    open_.clear();
+    has_reference_ = false;
+    smallest_slack_ = infinity;
+    last_failed_ = no_point;
   }
-  bool admits(double v) const {
+  bool admits(double v) {
+    if (open_.empty()) return true;
     const Point to = point(v);
-    return std::all_of(passed_.begin(), passed_.end(), [&](const Passed& p) {
-      const double nearer = std::min(distance(p.point, from_), distance(p.point, to));
-      return relative_distance(nearer + p.step, p.lfs - p.step, minimum_lfs_) < target_;
-    });
+    const double moved = distance(reference_, to);
+    if (moved <= smallest_slack_) return true;
+    if (last_failed_ < open_.size() && !(moved <= open_[last_failed_].slack) && !holds(open_[last_failed_], to))
+      return false;
+    std::size_t evaluated = 0;
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (moved <= open_[i].slack) continue;
+      ++evaluated;
+      if (!holds(open_[i], to)) {
+        last_failed_ = i;
+        return false;
+      }
+    }
+    if (evaluated > 2 + open_.size() / 16) {  // the reference is stale: move it here
+      reference_ = to;
+      smallest_slack_ = infinity;
+      for (Open& p : open_) smallest_slack_ = std::min(smallest_slack_, p.slack = slack(p, distance(p.point, to)));
+    }
+    return true;
   }
   void pass(double v) {
     const Point p = point(v);
     // The arc between grid points is at most 1.001 times their chord (they are far
     // closer than the radius of curvature).
-    passed_.push_back({p, lfs_at(v), 1.001 * distance(p, last_)});
+    const double step = 1.001 * distance(p, last_), local = lfs_at(v);
     last_ = p;
+    const double from = distance(p, from_);
+    if (relative_distance(from + step, local - step, minimum_lfs_) < target_) return;  // covered by u
+    Open open{p, from, step, local, -infinity, -infinity};
+    const double budget = (target_ * std::max(local - step, minimum_lfs_) - step) * (1 - 1e-9);
+    if (budget > 0 && holds(open, budget)) open.budget = budget;
+    if (!has_reference_) reference_ = p, has_reference_ = true;
+    open.slack = slack(open, distance(p, reference_));
+    smallest_slack_ = std::min(smallest_slack_, open.slack);
+    open_.push_back(open);
   }
 
  private:
-  struct Passed {
+  static constexpr std::size_t no_point = static_cast<std::size_t>(-1);
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
+
+  struct Open {
     Point point;
-    double lfs, step;
+    double from, step, lfs;
+    double budget;  // a distance to v within which the test holds; -infinity if none is known
+    double slack;   // |r v| within which |p v| is within the budget
   };
+  // The test itself, with |p v| = to_distance.
+  bool holds(const Open& p, double to_distance) const {
+    return relative_distance(std::min(p.from, to_distance) + p.step, p.lfs - p.step, minimum_lfs_) < target_;
+  }
+  bool holds(const Open& p, const Point& to) const { return holds(p, distance(p.point, to)); }
+  // Computed distances are within 4e-16 relative of the true ones, so if |r v| <= slack,
+  // the computed |p v| <= (|p r| + |r v|) (1 + 3e-15) < budget; the absolute term covers
+  // underflow.
+  static double slack(const Open& p, double reference_distance) {
+    return p.budget * (1 - 1e-13) - reference_distance - 1e-150;
+  }
+
   Point last_;
-  std::vector<Passed> passed_;
+  std::vector<Open> open_;  // the points passed since u that u does not cover
+  Point reference_;
+  bool has_reference_ = false;
+  double smallest_slack_ = infinity;
+  std::size_t last_failed_ = no_point;
 };
 
 // The greedy walk from `begin` to `end` over the dense lfs sample: appends the samples

@@ -1,7 +1,10 @@
 // Runtime of the lfs estimate (medial axis of an adaptive dense sample) and of the
 // samplers against curve complexity: random Fourier curves with N = 1 to 64 harmonics
 // (each curve point costs O(N), and the dense sample grows with N: counter "dense"); and
-// of the epsilon measure and of lfs queries against the number of samples or queries.
+// of the epsilon measure and of lfs queries against the number of samples or queries;
+// and of the glyph sweep's work for one glyph (glyph_sampling/0, 1, 2: 'A', 'g', '@'):
+// the lfs estimate, then a safe epsilon sampling and its measure for epsilon 0.1, 0.3
+// and 0.5. Glyphs have sharp corners, where lfs -> 0 and dense and medial points crowd.
 //
 //   sampling_benchmark --benchmark_filter='local_feature_size'
 #include <map>
@@ -11,6 +14,7 @@
 
 #include "certify/sampling_measure.h"
 #include "geometry/analytic_curves.h"
+#include "geometry/glyph_curves.h"
 #include "geometry/sampling.h"
 #include "geometry/seeded_random.h"
 
@@ -64,6 +68,22 @@ void lfs_queries(benchmark::State& state) {
   state.SetComplexityN(state.range(0));
 }
 
+void glyph_sampling(benchmark::State& state) {
+  constexpr char32_t glyphs[] = {U'A', U'g', U'@'};
+  const Curve curve = glyph_curve(default_glyph_font, glyphs[state.range(0)]);
+  std::size_t points = 0;
+  for (auto _ : state) {
+    const Local_feature_size lfs(curve);
+    points = 0;
+    for (const double epsilon : {0.1, 0.3, 0.5}) {
+      const Sample sample = safe_epsilon_sampling(lfs, epsilon, default_minimum_lfs(lfs));
+      benchmark::DoNotOptimize(curvebench::certify::measure_epsilon(lfs, sample.points, sample.minimum_lfs).epsilon);
+      points += sample.size();
+    }
+  }
+  state.counters["points"] = static_cast<double>(points);
+}
+
 bool register_all() {
   const auto harmonics = [](benchmark::internal::Benchmark* b) {
     b->RangeMultiplier(2)->Range(1, 64)->Complexity(benchmark::oAuto)->Unit(benchmark::kMillisecond);
@@ -76,6 +96,7 @@ bool register_all() {
       ->RangeMultiplier(4)->Range(16, 1024)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("lfs_queries", lfs_queries)
       ->RangeMultiplier(8)->Range(64, 1 << 15)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("glyph_sampling", glyph_sampling)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
   return true;
 }
 
