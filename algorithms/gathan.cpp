@@ -273,7 +273,8 @@ std::vector<Edge> gathan_reconstruction(std::span<const Point> points, double th
     return std::pair(edges[a.second].source, edges[a.second].target) <
            std::pair(edges[b.second].source, edges[b.second].target);
   });
-  for (const std::uint32_t i : pool | std::views::values) {
+  for (const auto& entry : pool) {  // not std::views::values: clang 14 cannot read libstdc++ 12's views
+    const std::uint32_t i = entry.second;
     const auto& e = edges[i];
     if (!deficient(i)) continue;
     result.emplace_back(e.source, e.target);

@@ -46,9 +46,10 @@ Reconstruction reconstruct(const Algorithm& algorithm, std::span<const Point> po
     if (!own_points) edge = {distinct.input_index(edge.first), distinct.input_index(edge.second)};
     if (edge.first > edge.second) std::swap(edge.first, edge.second);
   }
-  std::ranges::sort(result.edges);
-  const auto repeats = std::ranges::unique(result.edges);
-  result.edges.erase(repeats.begin(), repeats.end());
+  // Iterator algorithms, not std::ranges: clang 14 (the fuzz build) cannot compile
+  // libstdc++ 12's ranges over these.
+  std::sort(result.edges.begin(), result.edges.end());
+  result.edges.erase(std::unique(result.edges.begin(), result.edges.end()), result.edges.end());
   return result;
 }
 

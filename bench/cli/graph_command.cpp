@@ -6,7 +6,6 @@
 
 #include "bench/cli/input.h"
 #include "geometry/edge_io.h"
-#include "geometry/svg_picture.h"
 #include "graphs/proximity_graph.h"
 
 namespace curvebench::cli {
@@ -25,14 +24,7 @@ void run_graph(const Graph_options& options) {
   const std::vector<geometry::Edge> edges = graphs::edge_list(graph.build(dt, options.parameters));
 
   geometry::write_edges(options.output, to_input_indices(points, edges));
-  if (!options.svg.empty()) {
-    geometry::SvgPicture picture(points.points());
-    picture.set_title(std::string(graph.name) + " of " + options.input.filename().string() + ": " +
-                      std::to_string(points.size()) + " points, " + std::to_string(edges.size()) + " edges");
-    picture.add_edges(edges);
-    picture.add_points();
-    picture.write(options.svg);
-  }
+  if (!options.svg.empty()) write_graph_picture(options.svg, points.points(), edges, graph.name, options.input);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "geometry/point_io.h"
+#include "geometry/svg_picture.h"
 
 namespace curvebench::cli {
 
@@ -26,6 +27,17 @@ std::vector<geometry::Edge> to_input_indices(const geometry::PointSet& points, s
   }
   std::sort(renumbered.begin(), renumbered.end());
   return renumbered;
+}
+
+void write_graph_picture(const std::filesystem::path& svg, std::span<const geometry::Point> points,
+                         std::span<const geometry::Edge> edges, std::string_view what,
+                         const std::filesystem::path& input) {
+  geometry::SvgPicture picture(points);
+  picture.set_title(std::string(what) + " of " + input.filename().string() + ": " + std::to_string(points.size()) +
+                    " points, " + std::to_string(edges.size()) + " edges");
+  picture.add_edges(edges);
+  picture.add_points();
+  picture.write(svg);
 }
 
 }  // namespace curvebench::cli

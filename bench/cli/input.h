@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "geometry/edge.h"
@@ -19,5 +20,10 @@ geometry::PointSet load_point_set(const std::filesystem::path& path);
 // Edges between kept points, renumbered to the input file's points (first occurrences),
 // as sorted (i < j) pairs: what every command writes, so users can index their own file.
 std::vector<geometry::Edge> to_input_indices(const geometry::PointSet& points, std::span<const geometry::Edge> edges);
+
+// The picture of a graph on points, titled "WHAT of INPUT: n points, m edges".
+void write_graph_picture(const std::filesystem::path& svg, std::span<const geometry::Point> points,
+                         std::span<const geometry::Edge> edges, std::string_view what,
+                         const std::filesystem::path& input);
 
 }  // namespace curvebench::cli

@@ -10,7 +10,6 @@
 #include "bench/cli/input.h"
 #include "geometry/edge_io.h"
 #include "geometry/point_io.h"
-#include "geometry/svg_picture.h"
 
 namespace curvebench::cli {
 namespace {
@@ -37,14 +36,9 @@ void run_reconstruct(const Reconstruct_options& options) {
   if (!options.quiet)
     std::cerr << algorithm.name << ": " << points.size() << " points, " << result.edges.size() << " edges, "
               << elapsed.count() << " ms\n";
-  if (!options.svg.empty()) {
-    geometry::SvgPicture picture(own_points ? std::span<const geometry::Point>(result.points) : points.points());
-    picture.set_title(std::string(algorithm.title) + " of " + options.input.filename().string() + ": " +
-                      std::to_string(points.size()) + " points, " + std::to_string(result.edges.size()) + " edges");
-    picture.add_edges(result.edges);
-    picture.add_points();
-    picture.write(options.svg);
-  }
+  if (!options.svg.empty())
+    write_graph_picture(options.svg, own_points ? std::span<const geometry::Point>(result.points) : points.points(),
+                        result.edges, algorithm.title, options.input);
 }
 
 }  // namespace
