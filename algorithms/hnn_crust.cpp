@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 
 #include "algorithms/nn_crust.h"
 
@@ -34,7 +35,8 @@ Algorithm hnn_crust_algorithm() {
       .parameters = {},
       .capabilities = {.non_uniform = Support::yes, .manifold = Support::yes, .open = Support::yes,
                        .multiple = Support::yes, .guarantee = true, .time_complexity = "O(n log n)"},
-      .condition = {.statement = "epsilon < 0.47 (rho < 0.9)", .epsilon_below = 0.47, .rho_below = 0.9},
+      .condition = {.statement = "epsilon < 0.47 (rho < 0.9)", .epsilon_below = 0.47, .rho_below = 0.9,
+                    .corner_angle_above = {}},
       .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
         return Reconstruction{hnn_crust_reconstruction(points), {}};
       },

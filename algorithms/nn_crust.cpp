@@ -23,12 +23,12 @@ using geometry::certain_sign_of_difference;
 using geometry::squared_distance_approximation;
 using Index = std::uint32_t;
 
-// CGAL's triangulation itself, not graphs::Delaunay_triangulation: flattening it to
-// neighbour arrays costs a third of the triangulation, while a few sweeps over its faces
-// in memory order cost a few percent (walking around each vertex instead costs ten times a
-// sweep: the faces around a vertex lie all over memory). Each vertex carries the index of
-// its point and its rank in the (spatially sorted) insertion order, which indexes the
-// arrays of the search.
+// CGAL's triangulation itself, not graphs::Delaunay_triangulation (flattening it to
+// neighbour arrays costs a third of the triangulation). The fast path sweeps its faces in
+// memory order, about an eighth of the triangulation's time at 10^6 points; walking around
+// every vertex instead costs three to five times that, the faces around a vertex lying all
+// over memory. Each vertex carries the index of its point and its rank in the (spatially
+// sorted) insertion order, which indexes the arrays of the search.
 struct Vertex_info {
   Index index = 0;
   Index id = 0;
@@ -72,49 +72,34 @@ bool far_from_line(const Point& p, const Point& q, const Point& v, const Point& 
          }) != CGAL::NEGATIVE;
 }
 
-// Why a wedge can prove that p's half neighbour is one of p's Delaunay neighbours.
-// Every point s that is not a neighbour of p lies beyond the link edge ab of a triangle
-// pab, in the cone at p spanned by a and b, outside the (empty) circumcircle; the distance
-// from p to that circle along the cone is smallest at a or b, so |ps| > min(|pa|, |pb|).
-// So the wedge pab hides nothing that comes before the candidate r (the first neighbour of
-// p in the half-plane) when
-//   1. neither a nor b is strictly closer to p than r; or
-//   2. neither a nor b is in the half-plane: the half-plane's boundary then separates
-//      segment ab, and everything beyond it in the cone, from p's side (both half-planes
-//      are {x : f(x) < 0} for an affine f with f(p) <= 0); or
-//   3. a = q and b is in the half-plane at least |pr| from the line pq: the circle
-//      through p, q, b meets the line through p perpendicular to pq (NN-Crust) at distance
-//      2t > dist(b, pq) from p, and pq's bisector (HNN-Crust; a diameter of that circle) at
-//      distance > dist(b, pq), so the part of the cone in the half-plane and outside the
-//      circle lies farther from p than min(dist(b, pq), |pb|) >= |pr|.
-// Wedges at the infinite vertex are outside the convex hull, where there is no point.
-
-// Whether the approximations a < b of two squared distances prove the exact values in the
-// same order; b infinite stands for "no second value" (overflow is caught before).
+// Whether the approximations a < b of two squared distances (non-negative, a finite) prove
+// the exact values in the same order: geometry::certain_sign_of_difference, inlined for
+// the fast path; b infinite stands for "no such value" (overflow is caught before).
 bool certainly_before(double a, double b) {
-  return b == infinity || certain_sign_of_difference(a, b) == CGAL::POSITIVE;
+  if (b == infinity) return a < infinity;
+  const double sum = a + b;
+  return b - a > sum * 0x1p-48 && sum >= 0x1p-900;
 }
 
-// The three smallest approximate squared distances offered, with who offered them, and
-// the fourth smallest: enough to name a vertex's nearest neighbour and, when the curve is
-// sampled well, its half neighbour (its second or third nearest), and to bound how near the
-// other neighbours can be.
-struct Nearest_three {
-  double d[3] = {infinity, infinity, infinity};
-  double fourth = infinity;
-  Index id[3] = {no_neighbor, no_neighbor, no_neighbor};
-  bool exact = false;  // overflow: decide this vertex, and its neighbours' certificates, exactly
+// The two smallest approximate squared distances offered, with who offered them, and the
+// third smallest: enough to name a vertex's nearest neighbour and, when the curve is
+// sampled well, its half neighbour (its second nearest), and to bound how near its other
+// neighbours can be. 32 bytes: the sweep that fills them is most of the fast path's time.
+struct Nearest_two {
+  double d[2] = {infinity, infinity};
+  double third = infinity;
+  Index id[2] = {no_neighbor, no_neighbor};
 
-  // Branch-free: the offers come in no predictable order, and mispredicted branches cost
-  // more than the memory traffic.
+  // As selects rather than branches: the offers come in no predictable order.
   void offer(double x, Index by) {
-    const bool c0 = x < d[0], c1 = x < d[1], c2 = x < d[2], c3 = x < fourth;
-    const double d0 = c0 ? x : d[0], d1 = c0 ? d[0] : c1 ? x : d[1], d2 = c1 ? d[1] : c2 ? x : d[2];
-    const Index i0 = c0 ? by : id[0], i1 = c0 ? id[0] : c1 ? by : id[1], i2 = c1 ? id[1] : c2 ? by : id[2];
-    fourth = c2 ? d[2] : c3 ? x : fourth;
-    d[0] = d0, d[1] = d1, d[2] = d2;
-    id[0] = i0, id[1] = i1, id[2] = i2;
-    exact |= !(x < infinity);
+    const bool c0 = x < d[0], c1 = x < d[1], c2 = x < third;
+    third = c1 ? d[1] : c2 ? x : third;
+    const double d1 = c0 ? d[0] : c1 ? x : d[1];
+    const Index i1 = c0 ? id[0] : c1 ? by : id[1];
+    d[0] = c0 ? x : d[0];
+    id[0] = c0 ? by : id[0];
+    d[1] = d1;
+    id[1] = i1;
   }
 };
 
@@ -127,40 +112,48 @@ class Neighbor_search {
       : dt_(dt), inserted_(inserted), half_plane_(half_plane), result_(result) {}
 
   void run() {
-    find_nearest_three();
+    find_nearest_two();
+    std::vector<bool> exact(inserted_.size(), overflow_);
+    bool any_exact = overflow_;
+    if (!overflow_)
+      for (Index p = 0; p < inserted_.size(); ++p)
+        if (!choose_neighbors(p)) exact[p] = any_exact = true;
+    if (!any_exact) return;
     for (const Vertex_handle v : dt_.finite_vertex_handles())
-      if (!choose_neighbors(v->info().id)) search_exactly(v);
+      if (exact[v->info().id]) search_exactly(v);
   }
 
  private:
   // Fast path: one sweep over the faces in memory order and one over the vertices, with
   // floating-point filters that are certain or give up. Anything they cannot decide (ties,
-  // overflow, a half neighbour that is not among the three nearest, a neighbour of q that
-  // might lead to a nearer point) sends the vertex to search_exactly.
+  // overflow anywhere, a half neighbour that is not the second nearest, a neighbour of q
+  // that might lead to a nearer point) sends the vertex to search_exactly.
   const Point& point(Index id) const { return inserted_[id].first; }
   Index index(Index id) const { return inserted_[id].second; }
 
   // Each vertex hears once from each neighbour: from the face that has the edge from the
   // vertex to the neighbour counterclockwise, which for some hull edges is an infinite face.
-  void find_nearest_three() {
-    nearest_.assign(inserted_.size(), Nearest_three{});
+  void find_nearest_two() {
+    nearest_.assign(inserted_.size(), Nearest_two{});
     const Vertex_handle infinite = dt_.infinite_vertex();
-    for (const auto face : dt_.all_face_handles()) {
-      const Vertex_handle v[3] = {face->vertex(0), face->vertex(1), face->vertex(2)};
-      if (v[0] == infinite || v[1] == infinite || v[2] == infinite) {
-        for (int i = 0; i < 3; ++i) {
-          const Vertex_handle u = v[i], w = v[Triangulation::ccw(i)];
-          if (u != infinite && w != infinite)
-            nearest_[u->info().id].offer(squared_distance_approximation(u->point(), w->point()), w->info().id);
-        }
-        continue;
-      }
-      const Index id[3] = {v[0]->info().id, v[1]->info().id, v[2]->info().id};
-      const Point* p[3] = {&v[0]->point(), &v[1]->point(), &v[2]->point()};
-      nearest_[id[0]].offer(squared_distance_approximation(*p[0], *p[1]), id[1]);
-      nearest_[id[1]].offer(squared_distance_approximation(*p[1], *p[2]), id[2]);
-      nearest_[id[2]].offer(squared_distance_approximation(*p[2], *p[0]), id[0]);
+    const auto offer = [&](Vertex_handle u, Vertex_handle w) {
+      const double d = squared_distance_approximation(u->point(), w->point());
+      if (!(d < infinity)) overflow_ = true;  // the filters cannot rank it
+      nearest_[u->info().id].offer(d, w->info().id);
+    };
+    for (const auto face : dt_.finite_face_handles()) {
+      const Vertex_handle u = face->vertex(0), v = face->vertex(1), w = face->vertex(2);
+      offer(u, v);
+      offer(v, w);
+      offer(w, u);
     }
+    // The hull edges counterclockwise in the infinite faces.
+    auto face = dt_.incident_faces(infinite);
+    const auto done = face;
+    do {
+      const int i = face->index(infinite);
+      offer(face->vertex(Triangulation::ccw(i)), face->vertex(Triangulation::cw(i)));
+    } while (++face != done);
   }
 
   bool in_half_plane_of(Index p, Index q, double pq2, Index s, double ps2) const {
@@ -171,46 +164,37 @@ class Neighbor_search {
   // The fast path's certificate that no point hides beyond p's neighbours. Every point s
   // has a Delaunay neighbour strictly closer to p, or p itself (search_outwards), so a point
   // s that is not p's neighbour and does not come after r starts a chain of points closer
-  // than r that enters p's neighbours at one that is closer than r, the nearest q or
-  // `also_closer`, from one of its own neighbours t that is not p's. So it suffices that
-  // every neighbour t of q (and of also_closer) is p, or one of p's three nearest, or comes
-  // after r. For t beyond that vertex b's three nearest, |bt|^2 >= fourth(b) > 2 (|pb|^2 +
-  // |pr|^2) >= (|pb| + |pr|)^2 gives |pt| > |pr|.
-  bool chain_certificate(Index p, const Nearest_three& near, std::size_t closer) const {
-    const Point& pp = point(p);
-    const Index r = near.id[closer];
-    const double r2 = near.d[closer];
-    for (std::size_t k = 0; k < closer; ++k) {
-      const Nearest_three& b = nearest_[near.id[k]];
-      if (b.exact || !certainly_before(2 * (near.d[k] + r2), b.fourth)) return false;
-      for (const Index t : b.id) {
-        if (t == no_neighbor || t == p || t == near.id[0] || t == near.id[1] || t == near.id[2]) continue;
-        const Point& pt = point(t);
-        const CGAL::Sign s = compare_distances(pp, point(r), r2, pt, squared_distance_approximation(pp, pt));
-        if (s == CGAL::NEGATIVE || (s == CGAL::ZERO && index(t) < index(r))) return false;
-      }
+  // than r that enters p's neighbours at one closer than r, which is q, from a neighbour t
+  // of q that is not p's. So it suffices that every neighbour t of q is p, or p's second
+  // nearest r, or comes after r: for t beyond q's two nearest, |qt|^2 >= third(q) >
+  // 2 (|pq|^2 + |pr|^2) >= (|pq| + |pr|)^2 gives |pt| > |pr|; the two nearest are compared.
+  bool chain_certificate(Index p, const Nearest_two& near) const {
+    const Nearest_two& q = nearest_[near.id[0]];
+    if (!certainly_before(2 * (near.d[0] + near.d[1]), q.third)) return false;
+    const Point &pp = point(p), &pr = point(near.id[1]);
+    for (const Index t : q.id) {
+      if (t == no_neighbor || t == p || t == near.id[1]) continue;
+      const Point& pt = point(t);
+      const CGAL::Sign s = compare_distances(pp, pr, near.d[1], pt, squared_distance_approximation(pp, pt));
+      if (s == CGAL::NEGATIVE || (s == CGAL::ZERO && index(t) < index(near.id[1]))) return false;
     }
     return true;
   }
 
-  // Decides vertex p from its three nearest, or returns false.
+  // Decides vertex p when its second nearest is its half neighbour, or returns false.
   bool choose_neighbors(Index p) {
-    const Nearest_three& near = nearest_[p];
-    if (near.exact || near.id[1] == no_neighbor || !certainly_before(near.d[0], near.d[1])) return false;
-    std::size_t closer = 1;  // how many of the three nearest come before the half neighbour
-    if (!in_half_plane_of(p, near.id[0], near.d[0], near.id[1], near.d[1])) {
-      if (near.id[2] == no_neighbor || !certainly_before(near.d[2], near.fourth) ||
-          !in_half_plane_of(p, near.id[0], near.d[0], near.id[2], near.d[2]))
-        return false;
-      closer = 2;
-    }
-    if (!certainly_before(near.d[1], near.d[2]) || !chain_certificate(p, near, closer)) return false;
-    result_[index(p)] = {index(near.id[0]), index(near.id[closer])};
+    const Nearest_two& near = nearest_[p];
+    if (near.id[1] == no_neighbor || !certainly_before(near.d[0], near.d[1]) ||
+        !certainly_before(near.d[1], near.third) ||
+        !in_half_plane_of(p, near.id[0], near.d[0], near.id[1], near.d[1]) || !chain_certificate(p, near))
+      return false;
+    result_[index(p)] = {index(near.id[0]), index(near.id[1])};
     return true;
   }
 
   // Exact path for one vertex: its neighbours in counterclockwise order, every decision by
-  // exact predicate, the rules above on each wedge and, where they fail, a search outwards.
+  // exact predicate, rules on each wedge (ring_proves) and, where they fail, a search
+  // outwards.
 
   // A point seen from p: approximate squared distances to p and to p's nearest neighbour q,
   // and what the search decided about it.
@@ -244,6 +228,22 @@ class Neighbor_search {
     w.in_half_plane = in_half_plane(half_plane_, *p_, *q_, q_to_p_, *w.point, w.to_p, w.to_q);
   }
 
+  // Why the wedges around p can prove that no point beyond them comes before the
+  // candidate r (the first neighbour of p in the half-plane). Every point s that is not a
+  // neighbour of p lies beyond the link edge ab of a triangle pab, in the cone at p spanned
+  // by a and b, outside the (empty) circumcircle; the distance from p to that circle along
+  // the cone is smallest at a or b, so |ps| > min(|pa|, |pb|). So the wedge pab hides
+  // nothing that comes before r when
+  //   1. neither a nor b is strictly closer to p than r; or
+  //   2. neither a nor b is in the half-plane: the half-plane's boundary then separates
+  //      segment ab, and everything beyond it in the cone, from p's side (both half-planes
+  //      are {x : f(x) < 0} for an affine f with f(p) <= 0); or
+  //   3. a = q and b is in the half-plane at least |pr| from the line pq: the circle
+  //      through p, q, b meets the line through p perpendicular to pq (NN-Crust) at
+  //      distance 2t > dist(b, pq) from p, and pq's bisector (HNN-Crust; a diameter of that
+  //      circle) at distance > dist(b, pq), so the part of the cone in the half-plane and
+  //      outside the circle lies farther from p than min(dist(b, pq), |pb|) >= |pr|.
+  // Wedges at the infinite vertex are outside the convex hull, where there is no point.
   bool ring_proves(std::size_t q_at, std::size_t r_at) const {
     const std::size_t m = ring_.size();
     for (std::size_t k = 0; k < m; ++k) {
@@ -351,7 +351,8 @@ class Neighbor_search {
   Half_plane half_plane_;
   std::vector<Nearest_and_half_neighbor>& result_;
   // By vertex id:
-  std::vector<Nearest_three> nearest_;
+  std::vector<Nearest_two> nearest_;
+  bool overflow_ = false;  // some squared distance overflowed: decide every vertex exactly
   std::vector<Index> seen_by_;  // the vertex whose outward search has seen this one
   // The exact search of one vertex p:
   const Point* p_ = nullptr;
@@ -449,7 +450,7 @@ Algorithm nn_crust_algorithm() {
       .parameters = {},
       .capabilities = {.non_uniform = Support::yes, .manifold = Support::yes, .open = Support::yes,
                        .multiple = Support::yes, .guarantee = true, .time_complexity = "O(n log n)"},
-      .condition = {.statement = "epsilon < 1/3", .epsilon_below = 1.0 / 3},
+      .condition = {.statement = "epsilon < 1/3", .epsilon_below = 1.0 / 3, .rho_below = {}, .corner_angle_above = {}},
       .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
         return Reconstruction{nn_crust_reconstruction(points), {}};
       },

@@ -235,7 +235,7 @@ TEST(HnnCrust, TinyAndCollinearInput) {
 TEST(HnnCrust, MatchesTheDefinitionOnCurveSamples) {
   for (const std::uint64_t seed : {3u, 11u}) {
     const geometry::Curve curve = geometry::random_fourier_curve(seed);
-    expect_matches_brute_force(geometry::uniform_sampling(geometry::Local_feature_size(curve), 800).points);
+    expect_matches_brute_force(geometry::uniform_sampling(geometry::Local_feature_size(curve), 500).points);
   }
   const geometry::Sample ellipse = geometry::uniform_sampling(geometry::Local_feature_size(geometry::ellipse(2, 1)), 300);
   Edges truth = ellipse.edges;
