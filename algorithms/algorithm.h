@@ -46,9 +46,9 @@ struct Capabilities {
 // bounds are strict (epsilon < bound); unset means the paper states no such bound.
 struct Sampling_condition {
   std::string_view statement;               // as the survey writes it, "none" if there is none
-  std::optional<double> epsilon_below;      // epsilon-sampling (Amenta, Bern)
-  std::optional<double> rho_below;          // HNN-Crust's reach-based rho-sampling
-  std::optional<double> corner_angle_above; // GathanG: sharp corners' opening angle, degrees
+  std::optional<double> epsilon_below = {};       // epsilon-sampling (Amenta, Bern)
+  std::optional<double> rho_below = {};           // HNN-Crust's reach-based rho-sampling
+  std::optional<double> corner_angle_above = {};  // GathanG: sharp corners' opening angle, degrees
 };
 
 // Reconstructs from distinct points (the registry's reconstruct() merges duplicates

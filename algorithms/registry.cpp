@@ -41,15 +41,9 @@ Reconstruction reconstruct(const Algorithm& algorithm, std::span<const Point> po
   values.check(algorithm.parameters, algorithm.name);
   const geometry::PointSet distinct(std::vector<Point>(points.begin(), points.end()));
   Reconstruction result = algorithm.reconstruct(distinct.points(), values);
-  const bool own_points = !result.points.empty();
-  for (Edge& edge : result.edges) {
-    if (!own_points) edge = {distinct.input_index(edge.first), distinct.input_index(edge.second)};
-    if (edge.first > edge.second) std::swap(edge.first, edge.second);
-  }
-  // Iterator algorithms, not std::ranges: clang 14 (the fuzz build) cannot compile
-  // libstdc++ 12's ranges over these.
-  std::sort(result.edges.begin(), result.edges.end());
-  result.edges.erase(std::unique(result.edges.begin(), result.edges.end()), result.edges.end());
+  if (result.points.empty())  // the edges index the distinct points: name the input's
+    for (Edge& edge : result.edges) edge = {distinct.input_index(edge.first), distinct.input_index(edge.second)};
+  result.edges = geometry::canonical_edges(std::move(result.edges));
   return result;
 }
 

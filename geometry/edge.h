@@ -3,11 +3,23 @@
 // standard library, and so that geometry/ need not know about Boost.Graph.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
+#include <vector>
 
 namespace curvebench::geometry {
 
 using Edge = std::pair<std::size_t, std::size_t>;
+
+// The form every edge list takes when it leaves a builder or an algorithm, and in which
+// two of them compare equal as sets: each edge as (i, j) with i < j, sorted, no repeats.
+inline std::vector<Edge> canonical_edges(std::vector<Edge> edges) {
+  for (auto& [i, j] : edges)
+    if (i > j) std::swap(i, j);
+  std::sort(edges.begin(), edges.end());  // not std::ranges: the clang 14 fuzz build
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
 
 }  // namespace curvebench::geometry

@@ -28,13 +28,6 @@ struct Rate_options {
   std::size_t jobs = 0;
 };
 
-std::vector<geometry::Edge> canonical(std::vector<geometry::Edge> edges) {
-  for (auto& [i, j] : edges)
-    if (i > j) std::swap(i, j);
-  std::ranges::sort(edges);
-  return edges;
-}
-
 // exact[a][e]: curves that algorithm a reconstructs exactly at epsilon e; sampled[e]:
 // curves sampled at epsilon e (a curve the sampler rejects is left out and reported).
 struct Tally {
@@ -60,7 +53,7 @@ void rate_curve(const std::string& spec, const Rate_options& options,
     const double minimum_lfs = geometry::default_minimum_lfs(lfs);
     for (std::size_t e = 0; e < options.epsilons.size(); ++e) {
       const geometry::Sample sample = geometry::safe_epsilon_sampling(lfs, options.epsilons[e], minimum_lfs);
-      const std::vector<geometry::Edge> truth = canonical(sample.edges);
+      const std::vector<geometry::Edge> truth = geometry::canonical_edges(sample.edges);
       ++tally.sampled[e];
       for (std::size_t a = 0; a < chosen.size(); ++a) {
         try {

@@ -23,6 +23,7 @@
 #include "algorithms/conservative_crust.h"
 #include "algorithms/registry.h"
 #include "graphs/gabriel_graph.h"
+#include "tests/support/edge_sets.h"
 #include "tests/support/point_generators.h"
 
 namespace curvebench::algorithms {
@@ -30,26 +31,10 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Q = CGAL::Gmpq;
-
-Edges canonical(Edges edges) {
-  for (auto& [i, j] : edges)
-    if (i > j) std::swap(i, j);
-  std::ranges::sort(edges);
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
-}
-
-Edges path(std::size_t n) {
-  Edges edges;
-  for (std::size_t i = 0; i + 1 < n; ++i) edges.emplace_back(i, i + 1);
-  return edges;
-}
-
-Edges cycle(std::size_t n) {
-  Edges edges = path(n);
-  if (n > 2) edges.emplace_back(0, n - 1);
-  return canonical(edges);
-}
+using testing::canonical;
+using testing::cycle_edges;
+using testing::path_edges;
+using testing::regular_polygon;
 
 // ------------------------------------------------------------------ brute force
 
@@ -96,15 +81,6 @@ Edges brute_force_conservative_crust(const std::vector<Point>& points, double rh
   return edges;
 }
 
-std::vector<Point> regular_polygon(std::size_t k, double radius) {
-  std::vector<Point> points;
-  for (std::size_t i = 0; i < k; ++i) {
-    const double angle = 2 * std::numbers::pi * double(i) / double(k);
-    points.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
-  }
-  return points;
-}
-
 // ------------------------------------------------------------------- hand cases
 
 TEST(ConservativeCrust, TinyAndCollinearInputs) {
@@ -124,8 +100,8 @@ TEST(ConservativeCrust, TinyAndCollinearInputs) {
 
 TEST(ConservativeCrust, RegularPolygonsGiveTheirCycle) {
   for (std::size_t k = 3; k <= 40; ++k) {
-    EXPECT_EQ(conservative_crust_reconstruction(regular_polygon(k, 1)), cycle(k)) << k;
-    EXPECT_EQ(conservative_crust_reconstruction(regular_polygon(k, 1e-250)), cycle(k)) << k;
+    EXPECT_EQ(conservative_crust_reconstruction(regular_polygon(k, 1)), cycle_edges(k)) << k;
+    EXPECT_EQ(conservative_crust_reconstruction(regular_polygon(k, 1e-250)), cycle_edges(k)) << k;
   }
 }
 
@@ -137,8 +113,8 @@ TEST(ConservativeCrust, AnOpenArcGivesAPath) {
     const double angle = 0.05 * i, radius = 1 + 0.1 * angle;
     spiral.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
   }
-  EXPECT_EQ(conservative_crust_reconstruction(parabola), path(parabola.size()));
-  EXPECT_EQ(conservative_crust_reconstruction(spiral), path(spiral.size()));
+  EXPECT_EQ(conservative_crust_reconstruction(parabola), path_edges(parabola.size()));
+  EXPECT_EQ(conservative_crust_reconstruction(spiral), path_edges(spiral.size()));
 }
 
 TEST(ConservativeCrust, OutliersStayIsolated) {
@@ -147,7 +123,7 @@ TEST(ConservativeCrust, OutliersStayIsolated) {
   points.emplace_back(3, 0.1);     // far outside
   points.emplace_back(0.05, 0.02);  // near the centre
   points.emplace_back(-2, 2.5);    // far outside
-  EXPECT_EQ(conservative_crust_reconstruction(points), cycle(n));
+  EXPECT_EQ(conservative_crust_reconstruction(points), cycle_edges(n));
 }
 
 TEST(ConservativeCrust, RhoOneIsTheGabrielGraph) {
@@ -169,8 +145,8 @@ TEST(ConservativeCrust, IsRegisteredWithItsParameter) {
   EXPECT_EQ(crust->parameters[0].name, "rho");
   EXPECT_EQ(crust->parameters[0].default_value, default_conservative_crust_rho);
   const std::vector<Point> points = regular_polygon(12, 1);
-  EXPECT_EQ(reconstruct(*crust, points).edges, cycle(12));
-  EXPECT_EQ(reconstruct(*crust, points, {{"rho", 1}}).edges, cycle(12));
+  EXPECT_EQ(reconstruct(*crust, points).edges, cycle_edges(12));
+  EXPECT_EQ(reconstruct(*crust, points, {{"rho", 1}}).edges, cycle_edges(12));
   EXPECT_THROW(reconstruct(*crust, points, {{"rho", 2}}), std::invalid_argument);
 }
 

@@ -32,6 +32,7 @@
 #include "geometry/local_feature_size.h"
 #include "geometry/sampling.h"
 #include "graphs/gabriel_graph.h"
+#include "tests/support/edge_sets.h"
 #include "tests/support/point_generators.h"
 
 namespace curvebench::algorithms {
@@ -39,14 +40,9 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Q = CGAL::Gmpq;
-
-Edges canonical(Edges edges) {
-  for (auto& [i, j] : edges)
-    if (i > j) std::swap(i, j);
-  std::ranges::sort(edges);
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
-}
+using testing::canonical;
+using testing::cycle_edges;
+using testing::regular_polygon;
 
 // ------------------------------------------------------------ brute force in rationals
 
@@ -158,21 +154,6 @@ Edges exact_delaunay_crust(const std::vector<Point>& points) {
 
 // ---------------------------------------------------------------------------- helpers
 
-Edges cycle(std::size_t n) {
-  Edges edges;
-  for (std::size_t i = 0; i < n; ++i) edges.emplace_back(i, (i + 1) % n);
-  return canonical(edges);
-}
-
-std::vector<Point> regular_polygon(std::size_t k, double radius, double phase) {
-  std::vector<Point> points;
-  for (std::size_t i = 0; i < k; ++i) {
-    const double angle = phase + 2 * std::numbers::pi * double(i) / double(k);
-    points.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
-  }
-  return points;
-}
-
 // ------------------------------------------------------------------------- hand cases
 
 TEST(Crust, TinyInputs) {
@@ -182,7 +163,7 @@ TEST(Crust, TinyInputs) {
   const std::vector<Point> two{{1, 2}, {3, 4}};
   EXPECT_EQ(crust_reconstruction(two), (Edges{{0, 1}}));
   const std::vector<Point> acute{{0, 0}, {4, 0}, {1, 3}};
-  EXPECT_EQ(crust_reconstruction(acute), cycle(3));
+  EXPECT_EQ(crust_reconstruction(acute), cycle_edges(3));
   // An obtuse triangle: its circumcentre lies beyond the long side, which is dropped.
   const std::vector<Point> obtuse{{0, 0}, {4, 0}, {2, 1}};
   EXPECT_EQ(crust_reconstruction(obtuse), (Edges{{0, 2}, {1, 2}}));
@@ -198,9 +179,9 @@ TEST(Crust, CollinearPointsGiveTheChain) {
 
 TEST(Crust, RegularPolygonsGiveTheirCycle) {
   for (std::size_t k = 3; k <= 40; ++k) {
-    EXPECT_EQ(crust_reconstruction(regular_polygon(k, 1, 0)), cycle(k)) << k;
-    EXPECT_EQ(crust_reconstruction(regular_polygon(k, 1e-200, 0.3)), cycle(k)) << k;
-    EXPECT_EQ(crust_reconstruction(regular_polygon(k, 1e200, 0.7)), cycle(k)) << k;
+    EXPECT_EQ(crust_reconstruction(regular_polygon(k, 1, 0)), cycle_edges(k)) << k;
+    EXPECT_EQ(crust_reconstruction(regular_polygon(k, 1e-200, 0.3)), cycle_edges(k)) << k;
+    EXPECT_EQ(crust_reconstruction(regular_polygon(k, 1e200, 0.7)), cycle_edges(k)) << k;
   }
 }
 
@@ -209,9 +190,9 @@ TEST(Crust, CocircularLatticePointsGiveTheirCycle) {
   // triangle has the same circumcentre, the origin.
   const std::vector<Point> points{{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
                                   {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
-  EXPECT_EQ(crust_reconstruction(points), cycle(points.size()));
+  EXPECT_EQ(crust_reconstruction(points), cycle_edges(points.size()));
   const std::vector<Point> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  EXPECT_EQ(crust_reconstruction(square), cycle(4));
+  EXPECT_EQ(crust_reconstruction(square), cycle_edges(4));
 }
 
 TEST(Crust, ReconstructsADenseEllipse) {
@@ -221,7 +202,7 @@ TEST(Crust, ReconstructsADenseEllipse) {
     const double angle = 2 * std::numbers::pi * double(i) / double(n);
     points.emplace_back(2 * std::cos(angle), std::sin(angle));
   }
-  EXPECT_EQ(crust_reconstruction(points), cycle(n));
+  EXPECT_EQ(crust_reconstruction(points), cycle_edges(n));
 }
 
 TEST(Crust, ReconstructsASampledFourierCurve) {
@@ -273,7 +254,7 @@ TEST(Crust, IsRegisteredWithItsCondition) {
   EXPECT_TRUE(crust->parameters.empty());
   // Duplicates are merged by the registry; the crust is the same.
   const std::vector<Point> points{{0, 0}, {4, 0}, {1, 3}, {4, 0}};
-  EXPECT_EQ(reconstruct(*crust, points).edges, cycle(3));
+  EXPECT_EQ(reconstruct(*crust, points).edges, cycle_edges(3));
 }
 
 // ------------------------------------------------------------------ properties

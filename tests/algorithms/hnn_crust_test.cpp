@@ -9,12 +9,9 @@
 
 #include <rapidcheck/gtest.h>
 
-#include <CGAL/Gmpq.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "algorithms/hnn_crust.h"
 #include "algorithms/nn_crust.h"
@@ -23,52 +20,20 @@
 #include "geometry/local_feature_size.h"
 #include "geometry/sampling.h"
 #include "graphs/delaunay_triangulation.h"
+#include "tests/support/brute_force_neighbors.h"
+#include "tests/support/edge_sets.h"
 #include "tests/support/point_generators.h"
 
 namespace curvebench::algorithms {
 namespace {
 
 using Edges = std::vector<Edge>;
-using Q = CGAL::Gmpq;
+using testing::cycle_edges;
+using testing::path_edges;
+using testing::regular_polygon;
 
-// ------------------------------------------------------------ brute force in rationals
-
-struct Q_point {
-  Q x, y;
-};
-Q squared_distance(const Q_point& a, const Q_point& b) {
-  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
-}
-
-// The first point by (squared distance to p, index) among those `eligible`; no_neighbor if none.
-template <class Eligible>
-std::uint32_t brute_nearest(const std::vector<Q_point>& points, std::size_t p, Eligible eligible) {
-  std::uint32_t best = no_neighbor;
-  Q best_distance;
-  for (std::size_t s = 0; s < points.size(); ++s) {
-    if (s == p || !eligible(s)) continue;
-    const Q d = squared_distance(points[p], points[s]);
-    if (best == no_neighbor || d < best_distance) {  // ascending s: equal keeps the smaller index
-      best = std::uint32_t(s);
-      best_distance = d;
-    }
-  }
-  return best;
-}
-
-std::vector<Nearest_and_half_neighbor> brute_neighbors(std::span<const Point> input) {
-  std::vector<Q_point> points;
-  for (const Point& p : input) points.push_back({Q(p.x()), Q(p.y())});
-  std::vector<Nearest_and_half_neighbor> result(points.size());
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    const std::uint32_t q = brute_nearest(points, p, [](std::size_t) { return true; });
-    result[p].nearest = q;
-    if (q == no_neighbor) continue;
-    result[p].half = brute_nearest(points, p, [&](std::size_t s) {
-      return squared_distance(points[s], points[p]) < squared_distance(points[s], points[q]);
-    });
-  }
-  return result;
+std::vector<Nearest_and_half_neighbor> brute_neighbors(std::span<const Point> points) {
+  return testing::brute_force_nearest_and_half_neighbors(points, Half_plane::beyond_bisector);
 }
 
 Edges brute_hnn_crust(std::span<const Point> points) {
@@ -90,28 +55,6 @@ void expect_matches_brute_force(std::span<const Point> points) {
     EXPECT_EQ(found[p].half, expected[p].half) << "point " << p;
   }
   EXPECT_EQ(hnn_crust_reconstruction(points), brute_hnn_crust(points));
-}
-
-std::vector<Point> regular_polygon(int k, double radius, double phase, Point centre = {0, 0}) {
-  std::vector<Point> points;
-  for (int i = 0; i < k; ++i) {
-    const double t = phase + 2 * std::numbers::pi * i / k;
-    points.emplace_back(centre.x() + radius * std::cos(t), centre.y() + radius * std::sin(t));
-  }
-  return points;
-}
-
-Edges path(std::size_t k) {
-  Edges edges;
-  for (std::size_t i = 0; i + 1 < k; ++i) edges.emplace_back(i, i + 1);
-  return edges;
-}
-
-Edges cycle(std::size_t k) {
-  Edges edges = path(k);
-  edges.emplace_back(0, k - 1);
-  std::ranges::sort(edges);
-  return edges;
 }
 
 std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
@@ -136,18 +79,7 @@ RC_GTEST_PROP(HnnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
 }
 
 RC_GTEST_PROP(HnnCrust, MatchesTheDefinitionOverAllPairsOnClusteredInput, ()) {
-  const auto seed = *rc::gen::inRange<std::uint32_t>(0, 1u << 30);
-  const int n = *rc::gen::inRange(3, 150);
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(-1, 1);
-  std::vector<Point> points;
-  for (int c = 0; c < 1 + n / 20; ++c) {
-    const double scale = std::ldexp(1.0, int(random() % 12) - 6);
-    const Point centre(unit(random), unit(random));
-    for (int i = 0; i < 20 && int(points.size()) < n; ++i)
-      points.emplace_back(centre.x() + scale * unit(random), centre.y() + scale * unit(random) * 0.1);
-  }
-  points = testing::distinct(points);
+  const std::vector<Point> points = *testing::clustered_points();
   const auto expected = brute_neighbors(points);
   const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector);
   for (std::size_t p = 0; p < points.size(); ++p) {
@@ -176,11 +108,11 @@ TEST(HnnCrust, ReconstructsRegularPolygonsAsCycles) {
   for (int k = 4; k <= 40; ++k)
     for (const double phase : {0.0, 0.3, 1.0}) {
       const std::vector<Point> points = regular_polygon(k, 1 + k, phase, {-2.0, k * 0.1});
-      EXPECT_EQ(hnn_crust_reconstruction(points), cycle(k)) << k << " " << phase;
+      EXPECT_EQ(hnn_crust_reconstruction(points), cycle_edges(k)) << k << " " << phase;
       expect_matches_brute_force(points);
     }
   // The exact square: every nearest neighbour is a tie, broken by index.
-  EXPECT_EQ(hnn_crust_reconstruction(std::vector<Point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}), cycle(4));
+  EXPECT_EQ(hnn_crust_reconstruction(std::vector<Point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}), cycle_edges(4));
 }
 
 // An open arc: an end point's half-plane holds no point, so the end point keeps one edge and
@@ -195,7 +127,7 @@ TEST(HnnCrust, ReconstructsOpenCurvesAsPathsWithTwoEndPoints) {
         arc.emplace_back(3 * std::cos(t) + 1, 3 * std::sin(t) - 2);
       }
       const Edges edges = hnn_crust_reconstruction(arc);
-      EXPECT_EQ(edges, path(k)) << degrees_spanned << " degrees, " << k << " points";
+      EXPECT_EQ(edges, path_edges(k)) << degrees_spanned << " degrees, " << k << " points";
       const auto degree = degrees(edges, arc.size());
       EXPECT_EQ(std::ranges::count(degree, 1u), 2);
       expect_matches_brute_force(arc);
@@ -256,7 +188,7 @@ TEST(HnnCrust, IsRegisteredWithItsCondition) {
   const std::vector<Point> points = regular_polygon(9, 2, 0.1);
   std::vector<Point> doubled = points;
   doubled.insert(doubled.end(), points.begin(), points.end());
-  EXPECT_EQ(reconstruct(*algorithm, doubled).edges, cycle(9));
+  EXPECT_EQ(reconstruct(*algorithm, doubled).edges, cycle_edges(9));
 }
 
 }  // namespace

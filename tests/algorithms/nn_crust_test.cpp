@@ -9,12 +9,9 @@
 
 #include <rapidcheck/gtest.h>
 
-#include <CGAL/Gmpq.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "algorithms/nn_crust.h"
 #include "algorithms/registry.h"
@@ -22,53 +19,19 @@
 #include "geometry/local_feature_size.h"
 #include "geometry/sampling.h"
 #include "graphs/delaunay_triangulation.h"
+#include "tests/support/brute_force_neighbors.h"
+#include "tests/support/edge_sets.h"
 #include "tests/support/point_generators.h"
 
 namespace curvebench::algorithms {
 namespace {
 
 using Edges = std::vector<Edge>;
-using Q = CGAL::Gmpq;
+using testing::cycle_edges;
+using testing::regular_polygon;
 
-// ------------------------------------------------------------ brute force in rationals
-
-struct Q_point {
-  Q x, y;
-};
-Q squared_distance(const Q_point& a, const Q_point& b) {
-  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
-}
-
-// The first point by (squared distance to p, index) among those `eligible`; no_neighbor if none.
-template <class Eligible>
-std::uint32_t brute_nearest(const std::vector<Q_point>& points, std::size_t p, Eligible eligible) {
-  std::uint32_t best = no_neighbor;
-  Q best_distance;
-  for (std::size_t s = 0; s < points.size(); ++s) {
-    if (s == p || !eligible(s)) continue;
-    const Q d = squared_distance(points[p], points[s]);
-    if (best == no_neighbor || d < best_distance) {  // ascending s: equal keeps the smaller index
-      best = std::uint32_t(s);
-      best_distance = d;
-    }
-  }
-  return best;
-}
-
-std::vector<Nearest_and_half_neighbor> brute_neighbors(std::span<const Point> input) {
-  std::vector<Q_point> points;
-  for (const Point& p : input) points.push_back({Q(p.x()), Q(p.y())});
-  std::vector<Nearest_and_half_neighbor> result(points.size());
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    const std::uint32_t q = brute_nearest(points, p, [](std::size_t) { return true; });
-    result[p].nearest = q;
-    if (q == no_neighbor) continue;
-    result[p].half = brute_nearest(points, p, [&](std::size_t s) {
-      const Q_point &a = points[p], &b = points[q], &c = points[s];
-      return (c.x - a.x) * (b.x - a.x) + (c.y - a.y) * (b.y - a.y) < 0;
-    });
-  }
-  return result;
+std::vector<Nearest_and_half_neighbor> brute_neighbors(std::span<const Point> points) {
+  return testing::brute_force_nearest_and_half_neighbors(points, Half_plane::behind_p);
 }
 
 Edges brute_nn_crust(std::span<const Point> points) {
@@ -93,23 +56,6 @@ void expect_matches_brute_force(std::span<const Point> points) {
   EXPECT_EQ(nn_crust_reconstruction(points), brute_nn_crust(points));
 }
 
-std::vector<Point> regular_polygon(int k, double radius, double phase, Point centre = {0, 0}) {
-  std::vector<Point> points;
-  for (int i = 0; i < k; ++i) {
-    const double t = phase + 2 * std::numbers::pi * i / k;
-    points.emplace_back(centre.x() + radius * std::cos(t), centre.y() + radius * std::sin(t));
-  }
-  return points;
-}
-
-Edges cycle(std::size_t k) {
-  Edges edges;
-  for (std::size_t i = 0; i + 1 < k; ++i) edges.emplace_back(i, i + 1);
-  edges.emplace_back(0, k - 1);
-  std::ranges::sort(edges);
-  return edges;
-}
-
 // ------------------------------------------------------------ properties
 
 RC_GTEST_PROP(NnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
@@ -126,18 +72,7 @@ RC_GTEST_PROP(NnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
 // Clusters at several scales make half neighbours that hide behind other points' Delaunay
 // edges, which the exact search must find.
 RC_GTEST_PROP(NnCrust, MatchesTheDefinitionOverAllPairsOnClusteredInput, ()) {
-  const auto seed = *rc::gen::inRange<std::uint32_t>(0, 1u << 30);
-  const int n = *rc::gen::inRange(3, 150);
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(-1, 1);
-  std::vector<Point> points;
-  for (int c = 0; c < 1 + n / 20; ++c) {
-    const double scale = std::ldexp(1.0, int(random() % 12) - 6);
-    const Point centre(unit(random), unit(random));
-    for (int i = 0; i < 20 && int(points.size()) < n; ++i)
-      points.emplace_back(centre.x() + scale * unit(random), centre.y() + scale * unit(random) * 0.1);
-  }
-  points = testing::distinct(points);
+  const std::vector<Point> points = *testing::clustered_points();
   const auto expected = brute_neighbors(points);
   const auto found = nearest_and_half_neighbors(points, Half_plane::behind_p);
   for (std::size_t p = 0; p < points.size(); ++p) {
@@ -167,7 +102,7 @@ TEST(NnCrust, ReconstructsRegularPolygonsAsCycles) {
   for (int k = 5; k <= 40; ++k)
     for (const double phase : {0.0, 0.3, 1.0}) {
       const std::vector<Point> points = regular_polygon(k, 1 + k, phase, {k * 0.1, -3.0});
-      EXPECT_EQ(nn_crust_reconstruction(points), cycle(k)) << k << " " << phase;
+      EXPECT_EQ(nn_crust_reconstruction(points), cycle_edges(k)) << k << " " << phase;
       expect_matches_brute_force(points);
     }
 }
@@ -220,7 +155,7 @@ TEST(NnCrust, IsRegisteredWithItsCondition) {
   const std::vector<Point> points = regular_polygon(7, 2, 0.1);
   std::vector<Point> doubled = points;
   doubled.insert(doubled.end(), points.begin(), points.end());
-  EXPECT_EQ(reconstruct(*algorithm, doubled).edges, cycle(7));
+  EXPECT_EQ(reconstruct(*algorithm, doubled).edges, cycle_edges(7));
 }
 
 }  // namespace

@@ -100,7 +100,9 @@ TEST_P(Every_algorithm, HandlesTinyInputs) {
       EXPECT_LT(i, j);
       EXPECT_LT(j, points.size());
     }
-    if (points.size() < 2) EXPECT_TRUE(result.edges.empty()) << algorithm().name;
+    if (points.size() < 2) {
+      EXPECT_TRUE(result.edges.empty()) << algorithm().name;
+    }
   }
 }
 

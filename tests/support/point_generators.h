@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include <rapidcheck.h>
@@ -84,6 +85,26 @@ inline rc::Gen<std::vector<Point>> point_sets(int max_n) {
                                                                   {3, uniform_points(max_n)},
                                                                   {1, collinear_points(max_n)},
                                                                   {1, grid_points(4, 3)}}));
+}
+
+// Up to 150 points in flat clusters (aspect 10:1) at scales 2^-6 ... 2^5: nearest points
+// that hide behind other points' Delaunay edges.
+inline rc::Gen<std::vector<Point>> clustered_points() {
+  return rc::gen::map(rc::gen::pair(rc::gen::inRange<std::uint32_t>(0, 1u << 30), rc::gen::inRange(3, 150)),
+                      [](const std::pair<std::uint32_t, int>& seed_and_size) {
+                        const auto [seed, n] = seed_and_size;
+                        std::mt19937 random(seed);
+                        std::uniform_real_distribution<double> unit(-1, 1);
+                        std::vector<Point> points;
+                        for (int c = 0; c < 1 + n / 20; ++c) {
+                          const double scale = std::ldexp(1.0, int(random() % 12) - 6);
+                          const Point centre(unit(random), unit(random));
+                          for (int i = 0; i < 20 && int(points.size()) < n; ++i)
+                            points.emplace_back(centre.x() + scale * unit(random),
+                                                centre.y() + scale * unit(random) * 0.1);
+                        }
+                        return distinct(points);
+                      });
 }
 
 }  // namespace curvebench::testing

@@ -18,6 +18,7 @@
 #include "certify/sampling_measure.h"
 #include "geometry/analytic_curves.h"
 #include "geometry/sampling.h"
+#include "tests/support/edge_sets.h"
 
 namespace curvebench::testing {
 
@@ -46,13 +47,6 @@ struct Sampled_case {
                << c.measured_epsilon << "), " << c.sample.size() << " points";
   }
 };
-
-inline std::vector<geometry::Edge> canonical(std::vector<geometry::Edge> edges) {
-  for (auto& [i, j] : edges)
-    if (i > j) std::swap(i, j);
-  std::ranges::sort(edges);
-  return edges;
-}
 
 // `components` random Fourier curves (seeds seed, seed + 1, ...) in a row, 1.5 apart
 // beyond their bounding boxes so that the gap is wide against every curve's features.

@@ -1,0 +1,63 @@
+// The oracle for NN-Crust and HNN-Crust (algorithms/nn_crust.h): each point's nearest
+// neighbour and half neighbour by the definition over ALL pairs of points, in rationals
+// (CGAL::Gmpq), ties to the smaller index. It knows nothing of Delaunay triangulations.
+#pragma once
+
+#include <CGAL/Gmpq.h>
+
+#include <span>
+#include <vector>
+
+#include "algorithms/nn_crust.h"
+
+namespace curvebench::testing {
+
+namespace brute_force_detail {
+
+struct Q_point {
+  CGAL::Gmpq x, y;
+};
+
+inline CGAL::Gmpq squared_distance(const Q_point& a, const Q_point& b) {
+  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
+}
+
+// The first point by (squared distance to p, index) among those `eligible`.
+template <class Eligible>
+std::uint32_t nearest(const std::vector<Q_point>& points, std::size_t p, Eligible eligible) {
+  std::uint32_t best = algorithms::no_neighbor;
+  CGAL::Gmpq best_distance;
+  for (std::size_t s = 0; s < points.size(); ++s) {
+    if (s == p || !eligible(s)) continue;
+    const CGAL::Gmpq d = squared_distance(points[p], points[s]);
+    if (best == algorithms::no_neighbor || d < best_distance) {  // ascending s: equal keeps the smaller index
+      best = std::uint32_t(s);
+      best_distance = d;
+    }
+  }
+  return best;
+}
+
+}  // namespace brute_force_detail
+
+inline std::vector<algorithms::Nearest_and_half_neighbor> brute_force_nearest_and_half_neighbors(
+    std::span<const geometry::Point> input, algorithms::Half_plane half_plane) {
+  using namespace brute_force_detail;
+  std::vector<Q_point> points;
+  for (const geometry::Point& p : input) points.push_back({CGAL::Gmpq(p.x()), CGAL::Gmpq(p.y())});
+  std::vector<algorithms::Nearest_and_half_neighbor> result(points.size());
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const std::uint32_t q = nearest(points, p, [](std::size_t) { return true; });
+    result[p].nearest = q;
+    if (q == algorithms::no_neighbor) continue;
+    result[p].half = nearest(points, p, [&](std::size_t s) {
+      const Q_point &a = points[p], &b = points[q], &c = points[s];
+      if (half_plane == algorithms::Half_plane::behind_p)
+        return (c.x - a.x) * (b.x - a.x) + (c.y - a.y) * (b.y - a.y) < 0;
+      return squared_distance(c, a) < squared_distance(c, b);
+    });
+  }
+  return result;
+}
+
+}  // namespace curvebench::testing

@@ -1,0 +1,45 @@
+// Known answers for reconstruction tests: edge sets in the registry's canonical form
+// (i < j, sorted, no repeats), the path and cycle through consecutive points, and the
+// regular polygon whose right reconstruction is that cycle.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "geometry/edge.h"
+#include "geometry/kernel.h"
+
+namespace curvebench::testing {
+
+using geometry::canonical_edges;
+inline std::vector<geometry::Edge> canonical(std::vector<geometry::Edge> edges) {
+  return canonical_edges(std::move(edges));
+}
+
+// first -- first + 1 -- ... -- first + n - 1.
+inline std::vector<geometry::Edge> path_edges(std::size_t n, std::size_t first = 0) {
+  std::vector<geometry::Edge> edges;
+  for (std::size_t i = 0; i + 1 < n; ++i) edges.emplace_back(first + i, first + i + 1);
+  return edges;
+}
+
+// The path closed by its last edge when n > 2, canonical.
+inline std::vector<geometry::Edge> cycle_edges(std::size_t n, std::size_t first = 0) {
+  std::vector<geometry::Edge> edges = path_edges(n, first);
+  if (n > 2) edges.emplace_back(first, first + n - 1);
+  return canonical(std::move(edges));
+}
+
+// k points evenly on a circle, counter-clockwise from angle `phase`.
+inline std::vector<geometry::Point> regular_polygon(std::size_t k, double radius, double phase = 0,
+                                                    geometry::Point centre = {0, 0}) {
+  std::vector<geometry::Point> points;
+  for (std::size_t i = 0; i < k; ++i) {
+    const double t = phase + 2 * std::numbers::pi * double(i) / double(k);
+    points.emplace_back(centre.x() + radius * std::cos(t), centre.y() + radius * std::sin(t));
+  }
+  return points;
+}
+
+}  // namespace curvebench::testing
