@@ -1,0 +1,46 @@
+// How far a reconstructed curve C' lies from the original C: the survey's "Evaluation
+// Criteria". Both curves are edge chains (points + edges). Each is sampled uniformly and
+// densely; every sample s of one curve is mapped to its closest point M(s) on the other
+// (nearest_segment_index.h), in both directions (M : C -> C', M' : C' -> C, not inverse to
+// each other), and
+//   H_D   = max over both mappings of |s - M(s)|                  (Hausdorff),
+//   RMS_D = sqrt(sum over both mappings of |s - M(s)|^2 / N)      (N samples in all).
+// Samples sit at the midpoints of equal pieces of each edge, at most `spacing` long, each
+// weighted by its piece's length, so RMS_D is the arc-length mean that dense uniform
+// samples approximate, whatever `spacing`; H_D also takes every edge's end points, where
+// the largest distances of polylines often are.
+//
+// Metric values are output, never decisions: evaluated in double.
+#pragma once
+
+#include <span>
+
+#include "geometry/edge.h"
+#include "geometry/kernel.h"
+
+namespace curvebench::geometry {
+
+// An edge chain: edges index points.
+struct Polyline_view {
+  std::span<const Point> points;
+  std::span<const Edge> edges;
+};
+
+struct Curve_distance {
+  double hausdorff = 0;
+  double rms = 0;
+};
+
+// 0 and 0 if neither curve has an edge; +infinity for both if only one has none.
+// `spacing` > 0 (a length); the default used by the benchmark is 1e-3 of the bounding-box
+// diagonal of `original` (default_distance_spacing).
+Curve_distance curve_distance(const Polyline_view& original, const Polyline_view& reconstruction, double spacing);
+double default_distance_spacing(const Polyline_view& original);
+
+// The mean angle, in degrees in [0, 90], between each edge of `reconstruction` and the
+// original's edge closest to its midpoint (the lines' angle, so the deviation of the
+// normals, orientation ignored). 0 if `reconstruction` has no edge of positive length,
+// NaN if `original` has none.
+double normal_deviation_degrees(const Polyline_view& original, const Polyline_view& reconstruction);
+
+}  // namespace curvebench::geometry
