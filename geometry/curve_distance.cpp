@@ -40,11 +40,15 @@ One_way map_onto(const Polyline_view& from, const Nearest_segment_index& to, dou
 
 }  // namespace
 
+double bounding_box_diagonal(const Polyline_view& polyline) {
+  if (polyline.points.empty()) return 0;
+  const auto box = CGAL::bounding_box(polyline.points.begin(), polyline.points.end());
+  return std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+}
+
 double default_distance_spacing(const Polyline_view& original) {
-  if (original.points.empty()) return 1;
-  const auto box = CGAL::bounding_box(original.points.begin(), original.points.end());
-  const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
-  return diagonal > 0 ? 1e-3 * diagonal : 1;
+  const double diagonal = bounding_box_diagonal(original);
+  return diagonal > 0 && std::isfinite(diagonal) ? 1e-3 * diagonal : 1;
 }
 
 Curve_distance curve_distance(const Polyline_view& original, const Polyline_view& reconstruction, double spacing) {

@@ -37,6 +37,10 @@ struct Curve_distance {
 Curve_distance curve_distance(const Polyline_view& original, const Polyline_view& reconstruction, double spacing);
 double default_distance_spacing(const Polyline_view& original);
 
+// The diagonal of the bounding box of a polyline's points (0 for none): the unit in which
+// the benchmark reports distances.
+double bounding_box_diagonal(const Polyline_view& polyline);
+
 // The mean angle, in degrees in [0, 90], between each edge of `reconstruction` and the
 // original's edge closest to its midpoint (the lines' angle, so the deviation of the
 // normals, orientation ignored). 0 if `reconstruction` has no edge of positive length,

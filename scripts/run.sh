@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# The main job on bundled data: every proximity graph of a bundled curve sample, each
-# written as an edge list and an SVG picture under out/graphs/.
+# The main job on bundled data: the benchmark's `default` suite (every registered algorithm
+# on sampled curves, lfs noise, outliers, the sharp-corner family and the bundled point
+# sets), scored and charted in out/default/report.html.
+#   scripts/run.sh [SUITE [OUTPUT_DIR]]    another suite (`curvebench list suites`), elsewhere
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/build.sh"
 
-input="${1:-$root/data/hnncrust/crocodile-conf.p2d}"
-out="$root/out/graphs"
-mkdir -p "$out"
-curvebench="$root/build/bench/curvebench"
-for kind in $("$curvebench" list graphs --names); do
-  "$curvebench" graph "$kind" -i "$input" -o "$out/$kind.edges" --svg "$out/$kind.svg"
-  echo "$kind: $(wc -l <"$out/$kind.edges") edges -> $out/$kind.svg"
-done
+suite="${1:-default}"
+out="${2:-$root/out/$suite}"
+# A fresh run each time; `curvebench run --resume` continues an interrupted one instead.
+rm -rf "$out"
+"$root/build/bench/curvebench" run "$suite" -o "$out"
+echo "open $out/report.html in a browser"

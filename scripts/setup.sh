@@ -11,6 +11,7 @@ packages=(
   clang-14 libclang-rt-14-dev
   libfreetype-dev fonts-dejavu-core
   libtbb-dev libcli11-dev nlohmann-json3-dev
+  python3-matplotlib chromium
 )
 
 missing=()

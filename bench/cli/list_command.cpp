@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "algorithms/registry.h"
+#include "bench/runner/suite.h"
 #include "graphs/proximity_graph.h"
 
 namespace curvebench::cli {
@@ -56,6 +57,21 @@ void run_list(const List_options& options) {
       list_algorithms();
     return;
   }
+  if (options.what == "suites") {
+    for (const bench::Suite& suite : bench::suites()) {
+      if (options.names_only) {
+        std::cout << suite.name << '\n';
+        continue;
+      }
+      std::cout << std::left << std::setw(16) << suite.name << suite.description << '\n';
+      if (!suite.variable.empty()) {
+        std::cout << std::setw(16) << "" << suite.variable << ":";
+        for (const std::string_view level : suite.levels) std::cout << ' ' << level;
+        std::cout << '\n';
+      }
+    }
+    return;
+  }
   for (const auto& graph : graphs::proximity_graphs()) {
     if (options.names_only)
       std::cout << graph.name << '\n';
@@ -68,9 +84,9 @@ void run_list(const List_options& options) {
 
 void add_list_command(CLI::App& app) {
   auto options = std::make_shared<List_options>();
-  CLI::App* command = app.add_subcommand("list", "List the reconstruction algorithms or the proximity graphs");
-  command->add_option("WHAT", options->what, "algorithms or graphs")
-      ->check(CLI::IsMember({"algorithms", "graphs"}))
+  CLI::App* command = app.add_subcommand("list", "List the reconstruction algorithms, the proximity graphs or the benchmark suites");
+  command->add_option("WHAT", options->what, "algorithms, graphs or suites")
+      ->check(CLI::IsMember({"algorithms", "graphs", "suites"}))
       ->capture_default_str();
   command->add_flag("--names", options->names_only, "One name per line, for scripts");
   command->callback([options] { run_list(*options); });

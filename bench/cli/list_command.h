@@ -1,4 +1,4 @@
-// `curvebench list [algorithms|graphs] [--names]`: what the tool can run, as a table for
+// `curvebench list [algorithms|graphs|suites] [--names]`: what the tool can run, as a table for
 // people or one name per line for scripts.
 #pragma once
 

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench/cli/evaluate_command.h"
 #include "bench/cli/graph_command.h"
 #include "bench/cli/image_command.h"
 #include "bench/cli/list_command.h"
@@ -11,6 +12,7 @@
 #include "bench/cli/perturb_commands.h"
 #include "bench/cli/rate_command.h"
 #include "bench/cli/reconstruct_command.h"
+#include "bench/cli/run_command.h"
 #include "bench/cli/sample_command.h"
 
 int main(int argc, char** argv) {
@@ -26,6 +28,8 @@ int main(int argc, char** argv) {
   curvebench::cli::add_measure_command(app);
   curvebench::cli::add_rasterize_command(app);
   curvebench::cli::add_image_sample_command(app);
+  curvebench::cli::add_run_commands(app);
+  curvebench::cli::add_evaluate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -6,11 +6,7 @@ set -uo pipefail
 curvebench="$1"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-failures=0
-check() {  # check DESCRIPTION COMMAND...: the command must succeed
-  local what="$1"; shift
-  if "$@"; then echo "ok: $what"; else echo "FAILED: $what"; failures=$((failures + 1)); fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../support/check.sh"
 
 # A malformed file: exit status 2 and exactly one line on stderr, "curvebench: FILE:LINE: ...".
 printf '0 0\n1 1\n2 x\n' >"$work/bad.xy"
@@ -119,5 +115,4 @@ head -12 "$work/ring.xy" >"$work/ring12.xy"
 "$curvebench" reconstruct -a beta-skeleton -p beta=0.5 -i "$work/ring12.xy" -o "$work/x.edges" 2>"$work/err"
 check "an out-of-range parameter is a one-line error" test "$?" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
 
-echo "$((failures == 0 ? 1 : 0)) passed, $failures failed"
-exit $((failures > 0))
+finish

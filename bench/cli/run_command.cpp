@@ -1,0 +1,90 @@
+#include "bench/cli/run_command.h"
+
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "bench/runner/run.h"
+
+namespace curvebench::cli {
+namespace {
+
+struct Run_command_options {
+  bench::Run_options run;
+  std::string shard, pictures = "all";
+  bool no_report = false, quiet = false;
+};
+
+// "K/N" -> (K, N).
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  try {
+    if (slash != std::string::npos) {
+      std::size_t used_k = 0, used_n = 0;
+      const std::size_t k = std::stoul(text.substr(0, slash), &used_k), n = std::stoul(text.substr(slash + 1), &used_n);
+      if (used_k == slash && used_n == text.size() - slash - 1) return {k, n};
+    }
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument("--shard '" + text + "': expected K/N, e.g. 3/16");
+}
+
+void run(Run_command_options& o) {
+  if (!o.shard.empty()) std::tie(o.run.shard, o.run.shards) = parse_shard(o.shard);
+  o.run.pictures = o.pictures == "none" ? bench::Pictures::none
+                   : o.pictures == "failures" ? bench::Pictures::failures
+                                              : bench::Pictures::all;
+  o.run.report = !o.no_report;
+  o.run.progress = !o.quiet;
+  const bench::Run_summary s = bench::run_suite(o.run);
+  std::cerr << "run " << o.run.suite << ": " << s.jobs << " jobs";
+  if (s.resumed) std::cerr << " (" << s.resumed << " done before)";
+  std::cerr << "; ran " << s.ok + s.failed + s.crashed + s.timed_out << ": " << s.ok << " ok, " << s.failed
+            << " failed, " << s.crashed << " crashed, " << s.timed_out << " timed out\n";
+  std::cerr << "results: " << (o.run.output / "results.csv").string();
+  if (o.run.report) std::cerr << ", report: " << (o.run.output / "report.html").string();
+  std::cerr << '\n';
+}
+
+}  // namespace
+
+void add_run_commands(CLI::App& app) {
+  auto o = std::make_shared<Run_command_options>();
+  CLI::App* command = app.add_subcommand("run", "Run a benchmark suite: every algorithm on every input, scored");
+  command->add_option("SUITE", o->run.suite, "Suite name (see `curvebench list suites`)")->required();
+  command->add_option("-o,--output", o->run.output, "Output directory (results.csv, results.json, pictures, report)")
+      ->required();
+  command->add_option("-a,--algorithms", o->run.algorithms, "Algorithms to run (default: all)")->delimiter(',');
+  command->add_option("-j,--jobs", o->run.jobs, "Worker processes (default: one per core)");
+  command->add_option("--shard", o->shard, "Run shard K of N (K/N), for job arrays; combine with `curvebench merge`");
+  command->add_flag("--resume", o->run.resume, "Continue an interrupted run in the same directory");
+  command->add_option("--timeout", o->run.timeout_seconds, "Time limit per job in seconds (0: none)")
+      ->capture_default_str();
+  command->add_option("--pictures", o->pictures, "Pictures of reconstructions: all, failures (not exact) or none")
+      ->check(CLI::IsMember({"all", "failures", "none"}))
+      ->capture_default_str();
+  command->add_flag("--no-report", o->no_report, "Do not write report.html and charts");
+  command->add_flag("-q,--quiet", o->quiet, "No progress output");
+  command->callback([o] { run(*o); });
+
+  auto merge_inputs = std::make_shared<std::vector<std::filesystem::path>>();
+  auto merge_output = std::make_shared<std::filesystem::path>();
+  auto merge_no_report = std::make_shared<bool>(false);
+  CLI::App* merge = app.add_subcommand("merge", "Combine the output directories of shard runs into one");
+  merge->add_option("SHARD_DIR", *merge_inputs, "Output directories of `curvebench run --shard`")->required();
+  merge->add_option("-o,--output", *merge_output, "Directory of the combined results and report")->required();
+  merge->add_flag("--no-report", *merge_no_report, "Do not write report.html and charts");
+  merge->callback([=] {
+    const std::size_t rows = bench::merge_runs(*merge_inputs, *merge_output, !*merge_no_report);
+    std::cerr << "merged " << rows << " jobs into " << (*merge_output / "results.csv").string() << '\n';
+  });
+
+  auto report_dir = std::make_shared<std::filesystem::path>();
+  CLI::App* report = app.add_subcommand("report", "Write report.html and charts of a run's results.csv again");
+  report->add_option("DIR", *report_dir, "Output directory of a run")->required()->check(CLI::ExistingDirectory);
+  report->callback([=] {
+    if (!bench::make_report(*report_dir)) throw std::runtime_error("no report written");
+  });
+}
+
+}  // namespace curvebench::cli

@@ -1,0 +1,446 @@
+#!/usr/bin/python3
+"""Turns the results.csv of `curvebench run SUITE -o DIR` into DIR/report.html and DIR/charts/*.svg.
+
+Usage: /usr/bin/python3 bench/report/make_report.py DIR
+
+The charts mirror the survey's "Quantitative Evaluation" figures: mean RMS and exact
+reconstruction % per algorithm and level, mean runtime (log scale) and a status overview.
+/usr/bin/python3 because Debian's python3-matplotlib is installed for that interpreter only.
+"""
+import collections
+import csv
+import datetime
+import html
+import math
+import pathlib
+import re
+import statistics
+import sys
+import urllib.parse
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
+
+STATUS_COLOURS = {"ok": "#4c9a2a", "failed": "#f0a030", "crashed": "#d62728", "timeout": "#7b4ea3"}
+GALLERY_CAP = 48  # pictures per suite, so that the page stays light
+NOT_DRAWN = "×"  # marks a bar with no value (no ok job with ground truth)
+
+plt.rcParams.update({"svg.hashsalt": "curvebench", "font.size": 10, "axes.spines.top": False,
+                     "axes.spines.right": False})
+
+
+def esc(value):
+    return html.escape(str(value), quote=True)
+
+
+def number(text):
+    """A finite float, or None for empty/unparsable/non-finite cells."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) else None
+
+
+def flag(text):
+    return {"1": True, "0": False}.get(text)
+
+
+def mean(values):
+    values = [v for v in values if v is not None]
+    return statistics.fmean(values) if values else None
+
+
+def percent(flags):
+    flags = [f for f in flags if f is not None]
+    return 100.0 * sum(flags) / len(flags) if flags else None
+
+
+def fmt(value, spec=".3g", suffix=""):
+    return "–" if value is None else format(value, spec) + suffix
+
+
+def level_key(level):
+    """Levels sort by name, then numerically by value; the empty level last."""
+    name, _, value = level.partition("=")
+    parsed = number(value)
+    return (level == "", name, parsed is None, parsed if parsed is not None else 0.0, value)
+
+
+def safe_name(text):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", text) or "_"
+
+
+def counted(n, noun):
+    return f"<b>{n}</b> {noun}{'' if n == 1 else 's'}"
+
+
+def ordered(values):
+    return list(dict.fromkeys(values))
+
+
+COLUMNS = ("job suite input level algorithm params n_points status exact hausdorff rms normal_deviation manifold "
+           "components open_components closed_components unconnected runtime_ms picture message").split()
+
+
+def read_rows(path):
+    """Every row has every column as a string: missing columns and short rows read as ''."""
+    with open(path, newline="", encoding="utf-8") as f:
+        return [{c: (row.get(c) or "").strip() for c in COLUMNS} for row in csv.DictReader(f)]
+
+
+class Run:
+    """The rows plus derived orderings and per-row facts shared by charts and tables."""
+
+    def __init__(self, rows):
+        self.rows = rows
+        self.suites = ordered(r["suite"] for r in rows)
+        self.algorithms = ordered(r["algorithm"] for r in rows)
+        # tab20's strong colours first: they equal tab10's, so the first ten algorithms keep
+        # their colours when more are added.
+        tab20 = plt.get_cmap("tab20").colors
+        palette = tab20[0::2] + tab20[1::2]
+        self.colour = {a: palette[i % len(palette)] for i, a in enumerate(self.algorithms)}
+        # A failed job on an input with ground truth counts as not exact, so that failing
+        # cannot raise an algorithm's exact %; on an input without ground truth it does not count.
+        truth_inputs = {r["input"] for r in rows if flag(r["exact"]) is not None}
+        for r in rows:
+            r["_ok"] = r["status"] == "ok"
+            r["_exact"] = flag(r["exact"])
+            if not r["_ok"] and r["input"] in truth_inputs:
+                r["_exact"] = False
+
+    def suite_rows(self, suite):
+        return [r for r in self.rows if r["suite"] == suite]
+
+
+def group_stats(rows):
+    ok = [r for r in rows if r["_ok"]]
+    failures = collections.Counter(r["status"] or "(empty)" for r in rows if not r["_ok"])
+    return {
+        "jobs": len(rows),
+        "exact": percent(r["_exact"] for r in rows),
+        "rms": mean(number(r["rms"]) for r in ok),
+        "hausdorff": mean(number(r["hausdorff"]) for r in ok),
+        "manifold": percent(flag(r["manifold"]) for r in ok),
+        "runtime": mean(number(r["runtime_ms"]) for r in ok),
+        "failures": failures,
+    }
+
+
+# ---------------------------------------------------------------- charts
+
+def save(fig, path):
+    fig.savefig(path, format="svg", bbox_inches="tight", metadata={"Date": None})
+    plt.close(fig)
+
+
+def tick_labels(ax, labels):
+    """Long labels are rotated so that neighbours do not overlap."""
+    long = max((len(s) for s in labels), default=0) > 8
+    ax.set_xticklabels(labels, rotation=30 if long else 0, ha="right" if long else "center")
+
+
+def log_limits(values):
+    """Log scale limits when the positive values span more than two decades, else None."""
+    positive = [v for v in values if v is not None and v > 0]
+    if not positive or max(positive) / min(positive) <= 100:
+        return None
+    return 10 ** math.floor(math.log10(min(positive))), 10 ** math.ceil(math.log10(max(positive)) + 0.1)
+
+
+def mark_undrawn(ax, x, value, colour, bottom):
+    """Bars that cannot show (no value, or 0 on any axis) get a small text mark at the base."""
+    if value is None or value <= 0:
+        ax.text(x, bottom, NOT_DRAWN if value is None else "0", ha="center", va="bottom",
+                fontsize=8, color=colour, fontweight="bold")
+
+
+def grouped_bars(run, rows, metric, title, ylabel, path, percent_axis=False):
+    """Levels on the x axis, one bar per algorithm (the survey's RMS figures)."""
+    levels = sorted(ordered(r["level"] for r in rows), key=level_key)
+    algorithms = [a for a in run.algorithms if any(r["algorithm"] == a for r in rows)]
+    value = {(a, lv): group_stats([r for r in rows if r["algorithm"] == a and r["level"] == lv])[metric]
+             for a in algorithms for lv in levels}
+    names = {lv.partition("=")[0] for lv in levels if lv}
+    single = len(names) == 1 and "" not in levels
+    labels = [lv.partition("=")[2] if single else (lv or "all inputs") for lv in levels]
+
+    width = 0.8 / len(algorithms)
+    fig, ax = plt.subplots(figsize=(min(13.0, max(5.0, 1.5 + len(levels) * max(1.3, 0.25 * len(algorithms)))), 4.0))
+    limits = None if percent_axis else log_limits(value.values())
+    if limits:
+        ax.set_yscale("log")
+        ax.set_ylim(*limits)
+    elif percent_axis:
+        ax.set_ylim(0, 105)
+    else:
+        top = max((v for v in value.values() if v is not None), default=0)
+        ax.set_ylim(0, top * 1.1 if top > 0 else 1)
+    bottom = ax.get_ylim()[0]
+    for i, a in enumerate(algorithms):
+        xs = [j + (i - (len(algorithms) - 1) / 2) * width for j in range(len(levels))]
+        # On a log axis a bar starts at the lower limit, not at 0.
+        heights = [max((value[a, lv] or 0) - bottom, 0) for lv in levels]
+        ax.bar(xs, heights, width, bottom=bottom,
+               color=run.colour[a], label=a, edgecolor="white", linewidth=0.5)
+        for x, lv in zip(xs, levels):
+            mark_undrawn(ax, x, value[a, lv], run.colour[a], bottom)
+    ax.set_xticks(range(len(levels)))
+    tick_labels(ax, labels)
+    ax.set_xlabel(names.pop() if single else "level" if names else "")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(axis="y", alpha=0.3)
+    ax.legend(title="algorithm", loc="upper left", bbox_to_anchor=(1.01, 1), frameon=False)
+    save(fig, path)
+
+
+def runtime_chart(run, path):
+    """Mean runtime of ok jobs per algorithm on a log axis (the survey's runtime figure)."""
+    values = [group_stats([r for r in run.rows if r["algorithm"] == a])["runtime"] for a in run.algorithms]
+    positive = [v for v in values if v is not None and v > 0]  # make_charts ensures one
+    fig, ax = plt.subplots(figsize=(max(6.0, 1.0 + 0.6 * len(run.algorithms)), 4.0))
+    ax.set_yscale("log")
+    lo = 10 ** math.floor(math.log10(min(positive)))
+    ax.set_ylim(lo, 10 ** math.ceil(math.log10(max(positive)) + 0.3))
+    ax.set_xlim(-0.6, len(run.algorithms) - 0.4)  # also when the last algorithms have no bar
+    for x, (a, v) in enumerate(zip(run.algorithms, values)):
+        if v is not None and v > 0:
+            ax.bar(x, v - lo, 0.7, bottom=lo, color=run.colour[a])
+            ax.text(x, v, format(v, ".3g"), ha="center", va="bottom", fontsize=8)
+        else:
+            mark_undrawn(ax, x, v, run.colour[a], lo)
+    ax.set_xticks(range(len(run.algorithms)))
+    tick_labels(ax, run.algorithms)
+    ax.set_ylabel("mean runtime per job [ms] (log)")
+    ax.set_title("Runtime per algorithm (ok jobs, all suites)")
+    ax.grid(axis="y", alpha=0.3)
+    save(fig, path)
+
+
+def status_chart(run, path):
+    """Stacked job counts per status and algorithm."""
+    statuses = ordered(list(STATUS_COLOURS) + [r["status"] for r in run.rows])
+    counts = {a: collections.Counter(r["status"] for r in run.rows if r["algorithm"] == a) for a in run.algorithms}
+    fig, ax = plt.subplots(figsize=(max(6.0, 1.0 + 0.6 * len(run.algorithms)), 4.0))
+    base = [0] * len(run.algorithms)
+    for s in statuses:
+        heights = [counts[a][s] for a in run.algorithms]
+        if any(heights):
+            ax.bar(range(len(run.algorithms)), heights, 0.7, bottom=base, label=s or "(empty)",
+                   color=STATUS_COLOURS.get(s, "#999999"))
+            base = [b + h for b, h in zip(base, heights)]
+    ax.set_xticks(range(len(run.algorithms)))
+    tick_labels(ax, run.algorithms)
+    ax.set_ylabel("jobs")
+    ax.set_title("Job status per algorithm (all suites)")
+    ax.yaxis.get_major_locator().set_params(integer=True)
+    ax.legend(title="status", loc="upper left", bbox_to_anchor=(1.01, 1), frameon=False)
+    save(fig, path)
+
+
+def make_charts(run, charts_dir):
+    """Writes every chart; returns {section: [(file name, caption)]} with section None for the overall ones."""
+    charts_dir.mkdir(parents=True, exist_ok=True)
+    made = collections.defaultdict(list)
+    if not run.rows:
+        return made
+    status_chart(run, charts_dir / "status.svg")
+    made[None].append(("status.svg", "Jobs per status; the messages are under Non-ok jobs."))
+    if any((number(r["runtime_ms"]) or 0) > 0 for r in run.rows if r["_ok"]):
+        runtime_chart(run, charts_dir / "runtime.svg")
+        made[None].append(("runtime.svg", f"Mean runtime of ok jobs; {NOT_DRAWN} = no ok job."))
+    for suite in run.suites:
+        rows = run.suite_rows(suite)
+        if any(number(r["rms"]) is not None for r in rows):
+            name = f"rms-{safe_name(suite)}.svg"
+            grouped_bars(run, rows, "rms", f"{suite}: mean RMS distance to the true curve", "mean RMS [x bounding-box diagonal]",
+                         charts_dir / name)
+            made[suite].append((name, f"Mean RMS over ok jobs; {NOT_DRAWN} = no ok job with ground truth."))
+        if any(r["_exact"] is not None for r in rows):
+            name = f"exact-{safe_name(suite)}.svg"
+            grouped_bars(run, rows, "exact", f"{suite}: exactly reconstructed", "exact reconstructions [%]",
+                         charts_dir / name, percent_axis=True)
+            made[suite].append((name, "Share of jobs whose edge set equals the ground truth; "
+                                      f"failed jobs count as not exact; {NOT_DRAWN} = no ground truth."))
+    return made
+
+
+# ---------------------------------------------------------------- HTML
+
+CSS = """
+body { font: 14px/1.4 system-ui, sans-serif; margin: 1.5em auto; max-width: 1300px; padding: 0 1em; color: #222; }
+h1 { margin-bottom: 0.2em; } h2 { border-bottom: 1px solid #ccc; margin-top: 2em; }
+table { border-collapse: collapse; margin: 0.5em 0 1em; }
+th, td { border: 1px solid #ddd; padding: 3px 8px; text-align: left; vertical-align: top; }
+th { background: #f3f3f3; } td.n { text-align: right; font-variant-numeric: tabular-nums; }
+td.bad, .why { color: #c00; font-weight: bold; }
+.swatch { display: inline-block; width: 0.8em; height: 0.8em; margin-right: 0.4em; vertical-align: baseline; }
+.charts { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
+.charts figure { margin: 0; } .charts img { max-width: 100%; }
+figcaption, .note { font-size: 12px; color: #555; }
+.msg { white-space: pre-wrap; font-family: monospace; font-size: 12px; max-width: 50em; }
+.gallery { display: grid; grid-template-columns: repeat(auto-fill, minmax(230px, 1fr)); gap: 10px; }
+.shot { margin: 0; border: 1px solid #ccc; padding: 4px; background: #fff; }
+.shot img { width: 100%; height: 200px; object-fit: contain; }
+.shot.fail { border: 3px solid #d62728; }
+.shot figcaption { overflow-wrap: anywhere; }
+#image-check { margin-top: 2em; font-size: 12px; color: #777; }
+"""
+
+# Counts images that did not load, for scripts/check_report.sh (headless Chromium --dump-dom).
+IMAGE_CHECK_JS = """
+window.addEventListener('load', function () {
+  var images = Array.prototype.slice.call(document.images);
+  var broken = images.filter(function (i) { return !i.complete || i.naturalWidth === 0; });
+  var charts = images.filter(function (i) { return i.classList.contains('chart'); });
+  var el = document.getElementById('image-check');
+  el.dataset.total = images.length;
+  el.dataset.broken = broken.length;
+  el.dataset.charts = charts.length;
+  el.dataset.brokenSrc = broken.map(function (i) { return i.getAttribute('src'); }).join(' ');
+  el.dataset.state = 'done';
+  el.textContent = 'Image check: ' + images.length + ' images, ' + broken.length + ' broken.';
+});
+"""
+
+
+def chart_figures(charts):
+    if not charts:
+        return ""
+    items = "".join(f'<figure><img class="chart" src="charts/{esc(urllib.parse.quote(name))}" alt="{esc(name)}">'
+                    f"<figcaption>{esc(caption)}</figcaption></figure>" for name, caption in charts)
+    return f'<div class="charts">{items}</div>'
+
+
+def failures_text(counter):
+    total = sum(counter.values())
+    return f"{total} ({', '.join(f'{s} {n}' for s, n in sorted(counter.items()))})" if total else "0"
+
+
+def summary_table(run, suite, rows):
+    levels = sorted(ordered(r["level"] for r in rows), key=level_key)
+    out = ["<table><tr><th>algorithm</th><th>level</th><th>jobs</th><th>exact</th><th>mean RMS</th>"
+           "<th>mean Hausdorff</th><th>manifold</th><th>failures</th></tr>"]
+    for a in run.algorithms:
+        groups = [(lv, [r for r in rows if r["algorithm"] == a and r["level"] == lv]) for lv in levels]
+        groups = [(lv, g) for lv, g in groups if g]
+        for i, (lv, group) in enumerate(groups):
+            s = group_stats(group)
+            head = ""
+            if i == 0:
+                r, g, b = (round(255 * c) for c in run.colour[a][:3])
+                head = (f'<td rowspan="{len(groups)}"><span class="swatch" style="background:rgb({r},{g},{b})">'
+                        f"</span>{esc(a)}</td>")
+            bad = ' bad' if s["failures"] else ''
+            out.append(f"<tr>{head}<td>{esc(lv or '–')}</td><td class=n>{s['jobs']}</td>"
+                       f"<td class=n>{fmt(s['exact'], '.0f', '%')}</td><td class=n>{fmt(s['rms'])}</td>"
+                       f"<td class=n>{fmt(s['hausdorff'])}</td><td class=n>{fmt(s['manifold'], '.0f', '%')}</td>"
+                       f"<td class='n{bad}'>{esc(failures_text(s['failures']))}</td></tr>")
+    out.append("</table><p class=note>exact: share of jobs reconstructed exactly, where a failed job on an input "
+               "with ground truth counts as not exact; RMS, Hausdorff and manifold: over ok jobs; RMS and Hausdorff "
+               "are distances to the true curve in units of its bounding-box diagonal.</p>")
+    return "".join(out)
+
+
+def failure_reason(r):
+    """Why a gallery picture is highlighted, or '' when it is not a failure."""
+    if not r["_ok"]:
+        message = r["message"] if len(r["message"]) <= 160 else r["message"][:157] + "…"
+        return f"{r['status'] or 'no status'}: {message}" if message else (r["status"] or "no status")
+    if flag(r["exact"]) is False:
+        components = r["components"]
+        topology = [f"{components} component{'' if components == '1' else 's'}" if components else "",
+                    "non-manifold" if flag(r["manifold"]) is False else ""]
+        details = ", ".join(t for t in topology if t)
+        return "not exact" + (f" ({details})" if details else "")
+    return ""
+
+
+def gallery(rows):
+    pictured = [r for r in rows if r["picture"]]
+    pictured.sort(key=lambda r: (r["_ok"], flag(r["exact"]) is not False))  # stable: job order within
+    shown = pictured[:GALLERY_CAP]
+    if not shown:
+        return "<p>No pictures.</p>"
+    out = [f"<p>Showing {len(shown)} of {len(pictured)} pictures, failures first.</p><div class=gallery>"]
+    for r in shown:
+        why = failure_reason(r)
+        metrics = [f"{r['n_points']} points" if r["n_points"] else "",
+                   f"RMS {fmt(number(r['rms']))}" if r["rms"] else "",
+                   f"Hausdorff {fmt(number(r['hausdorff']))}" if r["hausdorff"] else "",
+                   f"{fmt(number(r['runtime_ms']))} ms" if r["runtime_ms"] else "",
+                   "exact" if flag(r["exact"]) else ""]
+        title = " · ".join(t for t in [f"#{r['job']}", r["algorithm"], r["level"], r["params"]] if t)
+        out.append(f'<figure class="shot{" fail" if why else ""}" id="job-{esc(r["job"])}">'
+                   f'<img src="{esc(urllib.parse.quote(r["picture"]))}" alt="job {esc(r["job"])}"><figcaption>'
+                   f"<b>{esc(title)}</b><br>{esc(r['input'])}<br>{esc(' · '.join(m for m in metrics if m))}"
+                   + (f'<br><span class="why">{esc(why)}</span>' if why else "") + "</figcaption></figure>")
+    out.append("</div>")
+    return "".join(out)
+
+
+def nonok_table(rows):
+    nonok = [r for r in rows if not r["_ok"]]
+    if not nonok:
+        return "<p>Every job finished with status ok.</p>"
+    out = ["<table><tr><th>job</th><th>suite</th><th>input</th><th>level</th><th>algorithm</th><th>params</th>"
+           "<th>points</th><th>status</th><th>message</th></tr>"]
+    for r in nonok:
+        out.append('<tr class="nonok">' + "".join(
+            f"<td>{esc(r[c])}</td>" for c in ("job", "suite", "input", "level", "algorithm", "params", "n_points"))
+            + f"<td class=bad>{esc(r['status'] or '(empty)')}</td><td class=msg>{esc(r['message'])}</td></tr>")
+    out.append("</table>")
+    return "".join(out)
+
+
+def report_html(run, charts, out_dir, csv_path):
+    title = f"curvebench report: {out_dir.resolve().name}"
+    finished = datetime.datetime.fromtimestamp(csv_path.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
+    now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    status_counts = collections.Counter(r["status"] for r in run.rows)
+    parts = [f"<!DOCTYPE html><html lang=en><head><meta charset=utf-8><title>{esc(title)}</title>"
+             f"<style>{CSS}</style></head><body><h1>{esc(title)}</h1>",
+             f"<p>results.csv written {esc(finished)}, report made {esc(now)}, directory "
+             f"<code>{esc(out_dir.resolve())}</code>.</p>"]
+    if not run.rows:
+        parts.append("<p>No jobs in results.csv.</p>")
+    else:
+        suites = ", ".join(f'<a href="#suite-{esc(safe_name(s))}">{esc(s or "(unnamed)")}</a> '
+                           f"({len(run.suite_rows(s))})" for s in run.suites)
+        parts.append(
+            f"<p>{counted(len(run.rows), 'job')} in {counted(len(run.suites), 'suite')}: {suites}.<br>"
+            f"{counted(len(run.algorithms), 'algorithm')}: {esc(', '.join(run.algorithms))}.<br>Status: "
+            + esc(", ".join(f"{s or '(empty)'} {n}" for s, n in status_counts.most_common()))
+            + '. <a href="#nonok">Non-ok jobs</a>.</p>')
+        parts.append("<h2>Overview</h2>" + chart_figures(charts[None]))
+        for suite in run.suites:
+            rows = run.suite_rows(suite)
+            parts.append(f'<h2 id="suite-{esc(safe_name(suite))}">Suite {esc(suite or "(unnamed)")}</h2>'
+                         + summary_table(run, suite, rows) + chart_figures(charts[suite])
+                         + "<h3>Reconstructions</h3>" + gallery(rows))
+        parts.append('<h2 id="nonok">Non-ok jobs</h2>' + nonok_table(run.rows))
+    parts.append('<div id="image-check" data-state="pending">Image check did not run.</div>'
+                 f"<script>{IMAGE_CHECK_JS}</script></body></html>\n")
+    return "".join(parts)
+
+
+def main(argv):
+    if len(argv) != 2:
+        sys.exit("usage: make_report.py DIR   (DIR holds results.csv from `curvebench run`)")
+    out_dir = pathlib.Path(argv[1])
+    csv_path = out_dir / "results.csv"
+    if not csv_path.is_file():
+        sys.exit(f"make_report: {csv_path} not found")
+    run = Run(read_rows(csv_path))
+    charts = make_charts(run, out_dir / "charts")
+    (out_dir / "report.html").write_text(report_html(run, charts, out_dir, csv_path), encoding="utf-8")
+    print(f"make_report: {out_dir / 'report.html'} ({len(run.rows)} jobs, "
+          f"{sum(len(c) for c in charts.values())} charts)")
+
+
+if __name__ == "__main__":
+    main(sys.argv)

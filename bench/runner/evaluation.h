@@ -1,0 +1,29 @@
+// The survey's evaluation criteria ("Evaluation Criteria", "Qualitative Comparison") for
+// one reconstruction: exact reconstruction, Hausdorff and RMS distance to the original
+// curve, normal deviation, manifoldness and components.
+#pragma once
+
+#include <optional>
+
+#include "geometry/curve_distance.h"
+#include "geometry/curve_topology.h"
+
+namespace curvebench::bench {
+
+struct Evaluation {
+  std::optional<bool> exact;               // edge set == ground truth; none without one
+  std::optional<double> hausdorff, rms;    // to the original; none without one
+  std::optional<double> diagonal;          // of the original's bounding box (results.csv's unit)
+  std::optional<double> normal_deviation;  // degrees
+  geometry::Curve_topology topology;
+};
+
+// `reconstruction`'s and `truth`'s edges are canonical. `on_input_points`: the
+// reconstruction's points are the input points that `truth` indexes (an interpolating
+// algorithm); only then is `exact` decided (an algorithm that moves points needs a
+// tolerance match, which comes with the first such algorithm). Distances and normals are
+// measured against `original` (the dense true curve) when given, else against `truth`.
+Evaluation evaluate(const geometry::Polyline_view& reconstruction, bool on_input_points,
+                    const geometry::Polyline_view* truth, const geometry::Polyline_view* original);
+
+}  // namespace curvebench::bench

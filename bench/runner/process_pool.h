@@ -1,0 +1,37 @@
+// Runs tasks each in a child process of its own, a few at a time, so that a task that
+// crashes (a segfault, an abort, std::terminate), runs out of memory or exceeds its time
+// limit costs only itself: the caller learns what happened and goes on. Threads could not
+// give that isolation; a crash in a thread ends the whole run.
+//
+// Each child runs `task(i)` and sends the string it returns to the parent through a pipe,
+// then leaves with _exit (no atexit handlers, no stdio flush of the parent's buffers).
+// The child must not use threads that the parent started (oneTBB's workers are not copied
+// by fork): tasks are single-threaded.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace curvebench::bench {
+
+struct Task_outcome {
+  enum class Kind { finished, crashed, timed_out };
+  Kind kind = Kind::finished;
+  std::string output;  // what the task returned (finished), else empty
+  std::string reason;  // crashed / timed out: "killed by signal 11 (Segmentation fault)", ...
+};
+
+struct Process_pool_options {
+  std::size_t workers = 1;      // children at once
+  double timeout_seconds = 0;   // per task; 0: none
+  std::size_t memory_limit_bytes = 0;  // address-space limit of each child; 0: none
+};
+
+// Runs task(0) ... task(count - 1); calls done(i, outcome) in the parent as each ends, in
+// the order they end. Throws std::system_error if a pipe or process cannot be made.
+void run_in_processes(std::size_t count, const Process_pool_options& options,
+                      const std::function<std::string(std::size_t)>& task,
+                      const std::function<void(std::size_t, Task_outcome)>& done);
+
+}  // namespace curvebench::bench

@@ -1,0 +1,357 @@
+#include "bench/runner/run.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#include "algorithms/registry.h"
+#include "bench/runner/bench_input.h"
+#include "bench/runner/evaluation.h"
+#include "bench/runner/process_pool.h"
+#include "bench/runner/results_table.h"
+#include "bench/runner/suite.h"
+#include "geometry/svg_picture.h"
+
+namespace curvebench::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr std::size_t max_picture_points = 5000;
+
+struct Job {
+  std::size_t number;  // = case * algorithms + algorithm
+  std::size_t case_index;
+  const algorithms::Algorithm* algorithm;
+};
+
+std::vector<const algorithms::Algorithm*> chosen_algorithms(const std::vector<std::string>& names) {
+  std::vector<const algorithms::Algorithm*> chosen;
+  if (names.empty())
+    for (const algorithms::Algorithm& algorithm : algorithms::registry()) chosen.push_back(&algorithm);
+  for (const std::string& name : names) {
+    const algorithms::Algorithm* algorithm = algorithms::find_algorithm(name);
+    if (!algorithm) throw std::invalid_argument("unknown algorithm '" + name + "' (see `curvebench list`)");
+    chosen.push_back(algorithm);
+  }
+  return chosen;
+}
+
+Result_row job_row(const Job& job, const Suite_case& c) {
+  Result_row row;
+  row[Column::job] = std::to_string(job.number);
+  row[Column::suite] = c.suite;
+  row[Column::input] = c.input;
+  row[Column::level] = c.level;
+  row[Column::algorithm] = std::string(job.algorithm->name);
+  return row;  // params: the defaults, written as nothing
+}
+
+bool same_job(const Result_row& a, const Result_row& b) {
+  for (const Column column : {Column::job, Column::suite, Column::input, Column::level, Column::algorithm, Column::params})
+    if (a[column] != b[column]) return false;
+  return true;
+}
+
+std::string picture_name(std::size_t job) {
+  char name[32];
+  std::snprintf(name, sizeof name, "pictures/%06zu.svg", job);
+  return name;
+}
+
+// The reconstruction on its input: the true curve light, ground-truth edges found in blue,
+// wrong edges red, missing ones dashed orange; without a ground truth, every edge blue.
+void write_picture(const std::filesystem::path& file, const Bench_input& input, std::span<const Point> points,
+                   std::span<const Edge> edges, bool on_input_points, const Evaluation& evaluation,
+                   std::string_view algorithm) {
+  geometry::SvgPicture picture(points);
+  std::string title = std::string(algorithm) + " on " + input.name + ": " + std::to_string(points.size()) + " points";
+  if (evaluation.exact) title += *evaluation.exact ? ", exact" : ", NOT exact";
+  if (evaluation.rms && evaluation.diagonal > 0)
+    title += ", RMS " + format_number(*evaluation.rms / *evaluation.diagonal) + " x diagonal";
+  picture.set_title(title);
+  if (input.curve)
+    picture.add_edges(input.curve->points, input.curve->edges, {.colour = "#c9d6ea", .width_px = 5, .legend = "curve"});
+  if (input.truth && on_input_points) {
+    std::vector<Edge> right, wrong, missing;
+    std::ranges::set_intersection(edges, *input.truth, std::back_inserter(right));
+    std::ranges::set_difference(edges, *input.truth, std::back_inserter(wrong));
+    std::ranges::set_difference(*input.truth, edges, std::back_inserter(missing));
+    picture.add_edges(missing, {.colour = "#ff9900", .width_px = 2, .dash_px = {5, 4}, .legend = "missing"});
+    picture.add_edges(right, {.colour = "#1f4e99", .width_px = 1.5, .legend = "reconstructed"});
+    picture.add_edges(wrong, {.colour = "#e00000", .width_px = 2.5, .legend = "wrong"});
+  } else {
+    picture.add_edges(edges, {.colour = "#1f4e99", .width_px = 1.5, .legend = "reconstructed"});
+  }
+  picture.add_points({.colour = "#000000", .radius_px = 1.8});
+  picture.write(file);
+}
+
+// Runs in a worker process: the job's row, as a CSV line.
+std::string run_job(const Job& job, const Suite_case& c, const Bench_input& input, const Run_options& options) {
+  Result_row row = job_row(job, c);
+  row[Column::n_points] = std::to_string(input.points.size());
+  try {
+    const auto start = Clock::now();
+    const algorithms::Reconstruction result = algorithms::reconstruct(*job.algorithm, input.points);
+    const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
+    const bool on_input_points = result.points.empty();
+    const std::span<const Point> points = on_input_points ? std::span<const Point>(input.points) : result.points;
+    const geometry::Polyline_view reconstruction{points, result.edges};
+    const geometry::Polyline_view truth{input.points, input.truth ? std::span<const Edge>(*input.truth) : std::span<const Edge>()};
+    const geometry::Polyline_view curve{input.curve ? std::span<const Point>(input.curve->points) : std::span<const Point>(),
+                                        input.curve ? std::span<const Edge>(input.curve->edges) : std::span<const Edge>()};
+    const Evaluation evaluation =
+        evaluate(reconstruction, on_input_points, input.truth ? &truth : nullptr, input.curve ? &curve : nullptr);
+
+    row[Column::status] = "ok";
+    row[Column::runtime_ms] = format_number(elapsed.count());
+    if (evaluation.exact) row[Column::exact] = *evaluation.exact ? "1" : "0";
+    // Distances as fractions of the original's bounding-box diagonal, so that curves of any
+    // size average (the survey's uniform noise uses the same unit). A curve of one point
+    // has no size: its distances stay absolute.
+    const double unit = evaluation.diagonal > 0 ? *evaluation.diagonal : 1;
+    if (evaluation.hausdorff) row[Column::hausdorff] = format_number(*evaluation.hausdorff / unit);
+    if (evaluation.rms) row[Column::rms] = format_number(*evaluation.rms / unit);
+    if (evaluation.normal_deviation) row[Column::normal_deviation] = format_number(*evaluation.normal_deviation);
+    const geometry::Curve_topology& t = evaluation.topology;
+    row[Column::manifold] = t.manifold ? "1" : "0";
+    row[Column::components] = std::to_string(t.components);
+    row[Column::open_components] = std::to_string(t.open_components);
+    row[Column::closed_components] = std::to_string(t.closed_components);
+    row[Column::unconnected] = std::to_string(t.unconnected);
+    // A picture of more points than a screen has pixels across shows nothing but costs
+    // megabytes, and a browser seconds: large inputs (the runtime suite) get none.
+    const bool wanted = options.pictures == Pictures::all || (options.pictures == Pictures::failures && evaluation.exact != true);
+    if (wanted && input.points.size() <= max_picture_points) {
+      row[Column::picture] = picture_name(job.number);
+      write_picture(options.output / row[Column::picture], input, points, result.edges, on_input_points, evaluation,
+                    job.algorithm->name);
+    }
+  } catch (const std::exception& error) {
+    row[Column::status] = "failed";
+    row[Column::message] = error.what();
+  }
+  return row.csv();
+}
+
+// Progress on stderr: a bar redrawn in place on a terminal, a line now and then otherwise
+// (a log file, CI).
+class Progress {
+ public:
+  Progress(std::size_t total, bool enabled) : total_(total), enabled_(enabled), terminal_(isatty(STDERR_FILENO)) {}
+
+  void job_done(bool ok) {
+    ++done_, failures_ += !ok;
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    const bool last = done_ == total_;
+    if (!last && now - shown_ < (terminal_ ? std::chrono::milliseconds(100) : std::chrono::seconds(15))) return;
+    shown_ = now;
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    const double left = done_ > 0 ? seconds * static_cast<double>(total_ - done_) / static_cast<double>(done_) : 0;
+    char line[160];
+    if (terminal_) {
+      const std::size_t width = 30, filled = total_ ? width * done_ / total_ : width;
+      std::snprintf(line, sizeof line, "\r[%s%s] %zu/%zu jobs, %zu not ok, %.0f s, ~%.0f s left ",
+                    std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), done_, total_, failures_,
+                    seconds, left);
+      std::cerr << line << (last ? "\n" : "") << std::flush;
+    } else {
+      std::snprintf(line, sizeof line, "run: %zu/%zu jobs, %zu not ok, %.0f s\n", done_, total_, failures_, seconds);
+      std::cerr << line;
+    }
+  }
+
+ private:
+  std::size_t total_, done_ = 0, failures_ = 0;
+  bool enabled_, terminal_;
+  Clock::time_point start_ = Clock::now(), shown_{};
+};
+
+void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> rows, bool report) {
+  std::ranges::sort(rows, {}, &Result_row::job);
+  write_results_csv(dir / "results.csv", rows);
+  write_results_json(dir / "results.json", rows);
+  if (report) make_report(dir);
+}
+
+}  // namespace
+
+Run_summary run_suite(const Run_options& options) {
+  const Suite* suite = find_suite(options.suite);
+  if (!suite) throw std::invalid_argument("unknown suite '" + options.suite + "' (see `curvebench list suites`)");
+  if (options.shards == 0 || options.shard == 0 || options.shard > options.shards)
+    throw std::invalid_argument("--shard K/N needs 1 <= K <= N");
+  const std::vector<const algorithms::Algorithm*> chosen = chosen_algorithms(options.algorithms);
+  const std::vector<Suite_case> cases = suite_cases(*suite);
+
+  std::vector<Job> jobs;
+  for (std::size_t c = 0; c < cases.size(); ++c)
+    for (std::size_t a = 0; a < chosen.size(); ++a)
+      if (const std::size_t number = c * chosen.size() + a; number % options.shards == options.shard - 1)
+        jobs.push_back({number, c, chosen[a]});
+
+  const std::filesystem::path csv = options.output / "results.csv";
+  std::filesystem::create_directories(options.output / "pictures");
+  std::vector<Result_row> rows;
+  if (std::filesystem::exists(csv)) {
+    if (!options.resume)
+      throw std::invalid_argument(csv.string() + " exists: add --resume to continue that run, or choose another -o");
+    rows = read_results_csv(csv);
+    std::map<std::size_t, const Job*> by_number;
+    for (const Job& job : jobs) by_number[job.number] = &job;
+    for (const Result_row& row : rows) {
+      const auto it = by_number.find(row.job());
+      if (it == by_number.end() || !same_job(row, job_row(*it->second, cases[it->second->case_index])))
+        throw std::invalid_argument(csv.string() + ": job " + row[Column::job] +
+                                    " is not this run's (another suite, algorithm list or shard?)");
+    }
+  }
+  write_results_csv(csv, rows);  // drops a line cut off by an interrupted run
+
+  std::vector<bool> done(cases.size() * chosen.size(), false);
+  for (const Result_row& row : rows) done[row.job()] = true;
+  std::vector<Job> pending;
+  for (const Job& job : jobs)
+    if (!done[job.number]) pending.push_back(job);
+
+  Run_summary summary{.jobs = jobs.size(), .resumed = jobs.size() - pending.size()};
+  Progress progress(pending.size(), options.progress);
+  std::ofstream out(csv, std::ios::binary | std::ios::app);
+  const auto record = [&](const Result_row& row) {
+    out << row.csv() << '\n' << std::flush;
+    rows.push_back(row);
+    const std::string& status = row[Column::status];
+    ++(status == "ok" ? summary.ok : status == "failed" ? summary.failed : status == "crashed" ? summary.crashed : summary.timed_out);
+    progress.job_done(status == "ok");
+  };
+
+  const std::size_t workers = options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  // Inputs are made in the parent, a batch of sources at a time (in parallel, each source's
+  // curve analysed once for all its levels), and shared with the workers by fork.
+  std::vector<std::vector<std::size_t>> groups;  // cases with pending jobs, by consecutive source
+  for (const Job& job : pending) {
+    const std::size_t c = job.case_index;
+    if (!groups.empty() && groups.back().back() == c) continue;
+    if (groups.empty() || input_source(cases[groups.back().back()].input) != input_source(cases[c].input))
+      groups.emplace_back();
+    groups.back().push_back(c);
+  }
+  const std::size_t batch = 8 * workers;
+  std::size_t next_job = 0;
+  for (std::size_t first = 0; first < groups.size(); first += batch) {
+    const std::size_t last = std::min(groups.size(), first + batch);
+    std::map<std::size_t, Bench_input> inputs;
+    std::map<std::size_t, std::string> errors;
+    std::vector<std::vector<Bench_input>> made(last - first);
+    std::vector<std::string> failure(last - first);
+    {
+      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
+      tbb::parallel_for(first, last, [&](std::size_t g) {
+        std::vector<std::string> names;
+        for (const std::size_t c : groups[g]) names.push_back(cases[c].input);
+        try {
+          made[g - first] = make_bench_inputs(names);
+        } catch (const std::exception& error) {
+          failure[g - first] = std::string("input: ") + error.what();
+        }
+      });
+    }
+    for (std::size_t g = first; g < last; ++g)
+      for (std::size_t k = 0; k < groups[g].size(); ++k)
+        if (failure[g - first].empty()) inputs.emplace(groups[g][k], std::move(made[g - first][k]));
+        else errors.emplace(groups[g][k], failure[g - first]);
+
+    std::vector<Job> batch_jobs;
+    for (; next_job < pending.size() && (inputs.contains(pending[next_job].case_index) ||
+                                          errors.contains(pending[next_job].case_index));
+         ++next_job) {
+      const Job& job = pending[next_job];
+      if (const auto error = errors.find(job.case_index); error != errors.end()) {
+        Result_row row = job_row(job, cases[job.case_index]);
+        row[Column::status] = "failed";
+        row[Column::message] = error->second;
+        record(row);
+      } else {
+        batch_jobs.push_back(job);
+      }
+    }
+    run_in_processes(
+        batch_jobs.size(), {.workers = workers, .timeout_seconds = options.timeout_seconds, .memory_limit_bytes = 8ull << 30},
+        [&](std::size_t k) {
+          const Job& job = batch_jobs[k];
+          return run_job(job, cases[job.case_index], inputs.at(job.case_index), options);
+        },
+        [&](std::size_t k, Task_outcome outcome) {
+          const Job& job = batch_jobs[k];
+          std::optional<Result_row> row;
+          if (outcome.kind == Task_outcome::Kind::finished) row = Result_row::parse_csv(outcome.output);
+          if (!row || !same_job(*row, job_row(job, cases[job.case_index]))) {
+            row = job_row(job, cases[job.case_index]);
+            (*row)[Column::n_points] = std::to_string(inputs.at(job.case_index).points.size());
+            (*row)[Column::status] = outcome.kind == Task_outcome::Kind::timed_out ? "timeout" : "crashed";
+            (*row)[Column::message] = outcome.reason.empty() ? "garbled result from the worker" : outcome.reason;
+          }
+          record(*row);
+        });
+  }
+  out.close();
+  write_outputs(options.output, std::move(rows), options.report);
+  return summary;
+}
+
+std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output, bool report) {
+  std::map<std::size_t, Result_row> by_job;
+  std::filesystem::create_directories(output / "pictures");
+  for (const std::filesystem::path& shard : shards) {
+    if (!std::filesystem::exists(shard / "results.csv"))
+      throw std::invalid_argument(shard.string() + ": no results.csv");
+    for (Result_row& row : read_results_csv(shard / "results.csv")) {
+      const auto [it, added] = by_job.emplace(row.job(), row);
+      if (!added && !same_job(it->second, row))
+        throw std::invalid_argument("job " + row[Column::job] + " differs between shards (" + shard.string() + ")");
+      const std::string& picture = row[Column::picture];
+      if (!picture.empty() && std::filesystem::exists(shard / picture) &&
+          !std::filesystem::equivalent(shard, output))
+        std::filesystem::copy_file(shard / picture, output / picture, std::filesystem::copy_options::overwrite_existing);
+    }
+  }
+  std::vector<Result_row> rows;
+  for (auto& [job, row] : by_job) rows.push_back(std::move(row));
+  const std::size_t count = rows.size();
+  write_outputs(output, std::move(rows), report);
+  return count;
+}
+
+bool make_report(const std::filesystem::path& dir) {
+  const std::string script = std::string(CURVEBENCH_SOURCE_DIR) + "/bench/report/make_report.py";
+  const std::string python = "/usr/bin/python3";
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl(python.c_str(), python.c_str(), script.c_str(), dir.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::cerr << "curvebench: the report failed (" << python << " " << script
+              << "; needs Debian's python3-matplotlib: scripts/setup.sh installs it); results.csv is complete\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace curvebench::bench

@@ -1,0 +1,56 @@
+// `curvebench run SUITE -o DIR`: every registered algorithm (or the chosen ones) on every
+// input of a suite, as jobs in worker processes (process_pool.h), each row appended to
+// DIR/results.csv the moment it ends, so that nothing computed is lost when a run is
+// interrupted and --resume runs only what is missing. --shard K/N runs a deterministic 1/N
+// of the jobs (job j belongs to shard j mod N + 1) and `curvebench merge` combines shards.
+//
+// DIR/ holds results.csv (sorted by job at the end), results.json, pictures/JOB.svg (each
+// reconstruction of at most 5,000 points on its ground truth, wrong edges red, missing
+// ones dashed) and the report
+// (report.html and charts/, by bench/report/make_report.py).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace curvebench::bench {
+
+enum class Pictures { all, failures, none };
+
+struct Run_options {
+  std::string suite;
+  std::filesystem::path output;
+  std::vector<std::string> algorithms = {};  // registry names; empty: all
+  std::size_t jobs = 0;                 // worker processes; 0: one per core
+  std::size_t shard = 1, shards = 1;    // run shard `shard` of `shards` (1-based)
+  bool resume = false;
+  double timeout_seconds = 300;  // per job; 0: none
+  Pictures pictures = Pictures::all;
+  bool report = true;
+  bool progress = true;
+};
+
+struct Run_summary {
+  std::size_t jobs = 0;     // in this shard
+  std::size_t resumed = 0;  // found done in results.csv
+  std::size_t ok = 0, failed = 0, crashed = 0, timed_out = 0;  // of those run now
+};
+
+// Throws std::invalid_argument for an unknown suite or algorithm, bad shard numbers, or an
+// existing results.csv without --resume (or one from another suite definition).
+Run_summary run_suite(const Run_options& options);
+
+// Combines the results of shard runs into `output` (rows by job, pictures copied) and
+// writes results.json and, if asked, the report. Throws std::invalid_argument if two
+// shards disagree on a job.
+std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output,
+                       bool report);
+
+// Writes DIR/report.html and DIR/charts/ from DIR/results.csv with /usr/bin/python3 and
+// matplotlib; false, with the reason on stderr, if that fails.
+bool make_report(const std::filesystem::path& dir);
+
+}  // namespace curvebench::bench

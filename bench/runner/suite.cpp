@@ -1,0 +1,150 @@
+#include "bench/runner/suite.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "bench/runner/bench_input.h"
+#include "geometry/curve_spec.h"
+
+namespace curvebench::bench {
+namespace {
+
+// Closed smooth curves with their own ground truth (SVG Béziers and random Fourier
+// curves): the survey's bunny and classic manifold curves, which we cannot redistribute
+// with their ground truth, stand-ins of the same kind. Two templates per {}: a level.
+#define CLOSED_CURVES(settings)                                                                       \
+  "svg:data/svg/simple.svg|" settings, "svg:data/svg/blob2.svg|" settings, "svg:data/svg/complex.svg|" settings, \
+      "fourier:seed=1|" settings, "fourier:seed=2|" settings, "fourier:seed=3|" settings
+
+const std::vector<Suite>& table() {
+  static const std::vector<Suite> all{
+      {.name = "sampling",
+       .description = "Sampling density: smooth closed curves, safe epsilon-sampling (survey: Sampling Density)",
+       .inputs = {CLOSED_CURVES("epsilon={}")},
+       .variable = "epsilon",
+       .levels = {"0.25", "0.5", "0.75"}},
+      {.name = "noisy",
+       .description = "Uniform noise of extent delta x bounding-box diagonal at epsilon 0.3 (survey: Uniform Noise)",
+       .inputs = {CLOSED_CURVES("epsilon=0.3|noise={}|seed=1")},
+       .variable = "delta",
+       .levels = {"0", "0.003", "0.01", "0.03"}},
+      {.name = "lfsnoise",
+       .description = "Noise along the normal of delta x lfs at epsilon 0.3 (survey: LFS-based Noise)",
+       .inputs = {CLOSED_CURVES("epsilon=0.3|lfs-noise={}|seed=1")},
+       .variable = "delta",
+       .levels = {"0", "0.1", "0.33", "0.5"}},
+      {.name = "sampling-noise",
+       .description = "Varying sampling density with lfs noise delta = 1/3 (survey: Varying Sampling Density + LFS Noise)",
+       .inputs = {CLOSED_CURVES("epsilon={}|lfs-noise=0.33|seed=1")},
+       .variable = "epsilon",
+       .levels = {"0.1", "0.2", "0.4"}},
+      {.name = "outliers",
+       .description = "Outliers uniform in the bounding box, percent of the samples, at epsilon 0.3 (survey: Outliers)",
+       .inputs = {CLOSED_CURVES("epsilon=0.3|outliers={}|seed=1")},
+       .variable = "percent",
+       .levels = {"0", "5", "10", "20"}},
+      {.name = "manifold",
+       .description = "Whether the output is a manifold, on the bundled classic point sets and sampled closed curves "
+                      "(survey: Manifold Curves)",
+       .inputs = {"file:data/hnncrust/crocodile-conf.p2d", "file:data/hnncrust/mushroom.p2d",
+                  "file:data/hnncrust/ventilator.p2d", "file:data/stretchdenoise/Circle0.txt",
+                  "file:data/stretchdenoise/Cup0.txt", "file:data/stretchdenoise/Keyboard0.txt",
+                  "file:data/stretchdenoise/Mouse0.txt", "file:data/stretchdenoise/thing.txt",
+                  "file:data/stretchdenoise/vase.txt", "file:data/stretchdenoise/drill.txt",
+                  CLOSED_CURVES("epsilon=0.4")}},
+      {.name = "sharp-corners",
+       .description = "The survey's sharp-corner family: a unit circle opening to a corner of the given angle, "
+                      "10, 16 and 20 points per circle, a sample at the corner (survey: Sharp Corners)",
+       .inputs = {"corner:angle={}|per-circle=10", "corner:angle={}|per-circle=16", "corner:angle={}|per-circle=20"},
+       .variable = "angle",
+       .levels = {"10", "20", "30", "40", "50", "60", "70", "80", "90"}},
+      {.name = "open-curves",
+       .description = "Open curves of the bundled SVG drawings (survey: Open Curves)",
+       .inputs = {"svg:data/svg/Deery.svg|epsilon={}", "svg:data/svg/Fishi.svg|epsilon={}",
+                  "svg:data/svg/Goldi.svg|epsilon={}", "svg:data/svg/Porpi.svg|epsilon={}",
+                  "svg:data/svg/Snail.svg|epsilon={}", "svg:data/svg/Spidy.svg|epsilon={}"},
+       .variable = "epsilon",
+       .levels = {"0.2", "0.4"}},
+      {.name = "multiple-curves",
+       .description = "Several components: multi-curve drawings and glyphs with holes (survey: Multiple Curves)",
+       .inputs = {"svg:data/svg/Frog2.svg|epsilon={}", "svg:data/svg/Croco.svg|epsilon={}", "glyph:B|epsilon={}",
+                  "glyph:g|epsilon={}", "glyph:8|epsilon={}", "glyph:%|epsilon={}", "glyph:@|epsilon={}"},
+       .variable = "epsilon",
+       .levels = {"0.2", "0.4"}},
+      {.name = "intersecting",
+       .description = "Curves that cross themselves (lfs 0 at the crossing, floored) (survey: Curves with "
+                      "Self-Intersections)",
+       .inputs = {"svg:data/svg/f1.svg|epsilon={}", "svg:data/svg/f4.svg|epsilon={}"},
+       .variable = "epsilon",
+       .levels = {"0.2", "0.4"}},
+      {.name = "qualitative",
+       .description = "The bundled point sets of the surveyed authors, without ground truth: topology and pictures "
+                      "(survey: Qualitative Comparison)",
+       .inputs = {"file:data/hnncrust/crocodile-conf.p2d", "file:data/hnncrust/mushroom.p2d",
+                  "file:data/hnncrust/ventilator.p2d", "file:data/stretchdenoise/apple_2percent_noise.txt",
+                  "file:data/stretchdenoise/butterfly_2percent_noise.txt", "file:data/stretchdenoise/fish.txt",
+                  "file:data/stretchdenoise/stair.xy", "file:data/stretchdenoise/Monitor0.txt"}},
+      {.name = "runtime",
+       .description = "Runtime over growing n on one smooth curve (survey: Computational Time)",
+       .inputs = {"fourier:seed=7|uniform={}"},
+       .variable = "n",
+       .levels = {"1000", "10000", "100000"}},
+      {.name = "glyphs",
+       .description = "Every glyph of DejaVu Sans, safe epsilon-sampling: the large real-curve set",
+       .inputs = {"glyph:*|epsilon={}"},
+       .variable = "epsilon",
+       .levels = {"0.2", "0.4", "0.6"}},
+      {.name = "smoke",
+       .description = "Two circles, for tests: a dense and a coarse sampling",
+       .inputs = {"circle:r=1|epsilon={}"},
+       .variable = "epsilon",
+       .levels = {"0.1", "0.6"}},
+      {.name = "default",
+       .description = "The main job, well under 5 minutes on 2 cores: every experiment but the glyphs",
+       .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "manifold", "sharp-corners",
+                 "open-curves", "multiple-curves", "intersecting", "qualitative", "runtime"}},
+      {.name = "all",
+       .description = "Every experiment suite",
+       .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "manifold", "sharp-corners",
+                 "open-curves", "multiple-curves", "intersecting", "qualitative", "runtime", "glyphs"}},
+  };
+  return all;
+}
+
+#undef CLOSED_CURVES
+
+std::string substituted(std::string_view text, std::string_view value) {
+  std::string result(text);
+  for (std::size_t at; (at = result.find("{}")) != std::string::npos;) result.replace(at, 2, value);
+  return result;
+}
+
+}  // namespace
+
+std::span<const Suite> suites() { return table(); }
+
+const Suite* find_suite(std::string_view name) {
+  const auto found = std::ranges::find(table(), name, &Suite::name);
+  return found == table().end() ? nullptr : &*found;
+}
+
+std::vector<Suite_case> suite_cases(const Suite& suite) {
+  std::vector<Suite_case> cases;
+  for (const std::string_view part : suite.parts) {
+    const Suite* inner = find_suite(part);
+    if (!inner || !inner->parts.empty()) throw std::invalid_argument("suite " + std::string(suite.name) + ": bad part " + std::string(part));
+    for (Suite_case& c : suite_cases(*inner)) cases.push_back(std::move(c));
+  }
+  const std::vector<std::string_view> one_level{""};
+  for (const std::string_view input : suite.inputs)
+    for (const std::string_view level : suite.variable.empty() ? one_level : suite.levels) {
+      const std::string name = substituted(input, level);
+      const std::string label = suite.variable.empty() ? "" : std::string(suite.variable) + "=" + std::string(level);
+      const std::string_view source = input_source(name);
+      for (const std::string& spec : geometry::expand_curve_specs(source))
+        cases.push_back({std::string(suite.name), spec + name.substr(source.size()), label});
+    }
+  return cases;
+}
+
+}  // namespace curvebench::bench

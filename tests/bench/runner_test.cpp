@@ -1,0 +1,228 @@
+// The benchmark runner: worker processes that crash or hang, input names, suites, the
+// results table, and whole runs (rows, exact reconstruction of a dense circle, resume).
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <thread>
+
+#include "bench/runner/bench_input.h"
+#include "bench/runner/process_pool.h"
+#include "bench/runner/results_table.h"
+#include "bench/runner/run.h"
+#include "bench/runner/suite.h"
+#include "geometry/point_io.h"
+#include "tests/geometry/temporary_directory.h"
+
+namespace curvebench::bench {
+namespace {
+
+using Kind = Task_outcome::Kind;
+
+TEST(ProcessPool, ACrashOrAHangCostsOnlyItsOwnTask) {
+  std::map<std::size_t, Task_outcome> outcomes;
+  const auto start = std::chrono::steady_clock::now();
+  run_in_processes(
+      6, {.workers = 3, .timeout_seconds = 1},
+      [](std::size_t i) -> std::string {
+        switch (i) {
+          case 1: raise(SIGSEGV); break;
+          case 2: std::abort();
+          case 3: std::this_thread::sleep_for(std::chrono::seconds(30)); break;
+          case 4: _exit(3);
+          case 5: return std::string(1 << 20, 'x');  // more than a pipe holds at once
+        }
+        return "task " + std::to_string(i);
+      },
+      [&](std::size_t i, Task_outcome outcome) { EXPECT_TRUE(outcomes.emplace(i, std::move(outcome)).second); });
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+  ASSERT_EQ(outcomes.size(), 6u);
+  EXPECT_EQ(outcomes[0].kind, Kind::finished);
+  EXPECT_EQ(outcomes[0].output, "task 0");
+  EXPECT_EQ(outcomes[1].kind, Kind::crashed);
+  EXPECT_NE(outcomes[1].reason.find("signal 11"), std::string::npos) << outcomes[1].reason;
+  EXPECT_EQ(outcomes[2].kind, Kind::crashed);
+  EXPECT_NE(outcomes[2].reason.find("signal 6"), std::string::npos) << outcomes[2].reason;
+  EXPECT_EQ(outcomes[3].kind, Kind::timed_out);
+  EXPECT_EQ(outcomes[4].kind, Kind::crashed);
+  EXPECT_NE(outcomes[4].reason.find("status 3"), std::string::npos) << outcomes[4].reason;
+  EXPECT_EQ(outcomes[5].kind, Kind::finished);
+  EXPECT_EQ(outcomes[5].output.size(), 1u << 20);
+}
+
+TEST(ProcessPool, AMemoryHogFailsAlone) {
+  Task_outcome outcome;
+  run_in_processes(
+      1, {.workers = 1, .memory_limit_bytes = 1ull << 30},
+      [](std::size_t) -> std::string {
+        try {
+          std::vector<char> huge(4ull << 30, 1);
+          return "allocated";
+        } catch (const std::bad_alloc&) {
+          return "bad_alloc";
+        }
+      },
+      [&](std::size_t, Task_outcome o) { outcome = std::move(o); });
+  EXPECT_EQ(outcome.output, "bad_alloc");
+}
+
+TEST(BenchInput, ACircleSampleHasItsClosedChainAsGroundTruth) {
+  const std::vector<std::string> names{"circle:r=1|epsilon=0.1", "circle:r=1|uniform=12|noise=0.01|seed=4"};
+  const std::vector<Bench_input> inputs = make_bench_inputs(names);
+  ASSERT_EQ(inputs.size(), 2u);
+  for (const Bench_input& input : inputs) {
+    const std::size_t n = input.points.size();
+    ASSERT_TRUE(input.truth.has_value());
+    ASSERT_EQ(input.truth->size(), n);  // a closed chain: as many edges as points
+    std::map<std::size_t, int> degree;
+    for (const auto& [i, j] : *input.truth) ++degree[i], ++degree[j];
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(degree[i], 2);
+    ASSERT_TRUE(input.curve);
+    for (const Point& p : input.curve->points) EXPECT_NEAR(std::hypot(p.x(), p.y()), 1, 1e-3);
+  }
+  EXPECT_EQ(inputs[1].points.size(), 12u);
+  // Noise moves the points off the circle but within 1% of the diagonal (2 sqrt 2).
+  double largest = 0;
+  for (const Point& p : inputs[1].points) largest = std::max(largest, std::abs(std::hypot(p.x(), p.y()) - 1));
+  EXPECT_GT(largest, 0);
+  EXPECT_LE(largest, 0.01 * 2 * std::sqrt(2.0) + 1e-12);
+  // The same name gives the same bits.
+  EXPECT_EQ(make_bench_inputs(names)[1].points, inputs[1].points);
+}
+
+TEST(BenchInput, APointFileHasNoGroundTruth) {
+  const std::vector<std::string> names{"file:data/hnncrust/mushroom.p2d", "file:data/hnncrust/mushroom.p2d|outliers=10"};
+  const std::vector<Bench_input> inputs = make_bench_inputs(names);
+  const auto file = geometry::read_point_file(std::filesystem::path(CURVEBENCH_SOURCE_DIR) / "data/hnncrust/mushroom.p2d");
+  EXPECT_EQ(inputs[0].points, file.points);
+  EXPECT_FALSE(inputs[0].truth);
+  EXPECT_FALSE(inputs[0].curve);
+  EXPECT_EQ(inputs[1].points.size(), file.points.size() + static_cast<std::size_t>(std::round(0.1 * file.points.size())));
+}
+
+TEST(BenchInput, MalformedNamesAreClearErrors) {
+  for (const std::string name : {"circle:r=1", "circle:r=1|epsilon=0.1|uniform=5", "circle:r=1|epsilon=x",
+                                 "circle:r=1|colour=red", "circle:r=1|uniform=2.5", "file:data/hnncrust/mushroom.p2d|epsilon=0.2",
+                                 "circle:r=1|epsilon=0.1|seed=1|seed=2"}) {
+    const std::vector<std::string> names{name};
+    EXPECT_THROW(make_bench_inputs(names), std::invalid_argument) << name;
+  }
+}
+
+TEST(Suites, EveryCaseNamesAKnownSourceAndLevel) {
+  std::set<std::string_view> names;
+  for (const Suite& suite : suites()) {
+    EXPECT_TRUE(names.insert(suite.name).second) << suite.name;
+    if (suite.name == "glyphs" || suite.name == "all") continue;  // thousands of glyphs; covered by `all`'s parts
+    const std::vector<Suite_case> cases = suite_cases(suite);
+    EXPECT_FALSE(cases.empty()) << suite.name;
+    for (const Suite_case& c : cases) {
+      EXPECT_EQ(c.input.find("{}"), std::string::npos) << c.input;
+      EXPECT_EQ(c.level.empty(), find_suite(c.suite)->variable.empty()) << c.input;
+      const std::string_view source = input_source(c.input);
+      if (source.starts_with("file:") || source.starts_with("svg:")) {
+        EXPECT_TRUE(std::filesystem::exists(resolve_data_path(source.substr(source.find(':') + 1)))) << c.input;
+      }
+    }
+  }
+  const std::vector<Suite_case> smoke = suite_cases(*find_suite("smoke"));
+  ASSERT_EQ(smoke.size(), 2u);
+  EXPECT_EQ(smoke[0].input, "circle:r=1|epsilon=0.1");
+  EXPECT_EQ(smoke[1].level, "epsilon=0.6");
+}
+
+TEST(ResultsTable, RowsSurviveQuotingAndACutOffLastLine) {
+  testing::TemporaryDirectory dir;
+  std::vector<Result_row> rows(2);
+  rows[0][Column::job] = "0";
+  rows[0][Column::input] = "svg:a,b.svg|epsilon=0.1";
+  rows[0][Column::message] = "said \"no\", twice";
+  rows[1][Column::job] = "7";
+  rows[1][Column::hausdorff] = format_number(std::numeric_limits<double>::infinity());
+  write_results_csv(dir.path() / "results.csv", rows);
+  EXPECT_EQ(read_results_csv(dir.path() / "results.csv"), rows);
+  std::ofstream(dir.path() / "results.csv", std::ios::app) << "8,sampling,cut";  // no line end
+  EXPECT_EQ(read_results_csv(dir.path() / "results.csv"), rows);
+  EXPECT_EQ(format_number(0.1), "0.1");
+  EXPECT_EQ(std::stod(format_number(1.0 / 3)), 1.0 / 3);
+  testing::TemporaryDirectory other;
+  other.write("results.csv", "job,what\n1,2\n");
+  EXPECT_THROW(read_results_csv(other.path() / "results.csv"), std::runtime_error);
+}
+
+// Every column but the runtime, which no two runs share.
+std::vector<Result_row> without_runtimes(std::vector<Result_row> rows) {
+  for (Result_row& row : rows) row[Column::runtime_ms].clear();
+  return rows;
+}
+
+TEST(Run, SmokeSuiteRowsAndResume) {
+  testing::TemporaryDirectory dir;
+  Run_options options{.suite = "smoke", .output = dir.path() / "a", .algorithms = {"nn-crust", "emst", "crust"},
+                      .jobs = 2, .report = false, .progress = false};
+  const Run_summary summary = run_suite(options);
+  EXPECT_EQ(summary.jobs, 6u);
+  EXPECT_EQ(summary.ok, 6u);
+  const std::vector<Result_row> rows = read_results_csv(options.output / "results.csv");
+  ASSERT_EQ(rows.size(), 6u);
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    EXPECT_EQ(rows[j].job(), j);
+    EXPECT_EQ(rows[j][Column::suite], "smoke");
+    EXPECT_EQ(rows[j][Column::status], "ok") << rows[j][Column::message];
+    EXPECT_TRUE(std::filesystem::exists(options.output / rows[j][Column::picture]));
+  }
+  // NN-Crust on the dense circle (epsilon 0.1 < 1/3) is exact, with distances below the
+  // sagitta of its edges; the EMST of a circle misses one edge: open, not exact.
+  EXPECT_EQ(rows[0][Column::algorithm], "nn-crust");
+  EXPECT_EQ(rows[0][Column::exact], "1");
+  EXPECT_LT(std::stod(rows[0][Column::rms]), 0.01);
+  EXPECT_EQ(rows[0][Column::closed_components], "1");
+  EXPECT_EQ(rows[1][Column::exact], "0");
+  EXPECT_EQ(rows[1][Column::open_components], "1");
+  EXPECT_TRUE(std::filesystem::exists(options.output / "results.json"));
+
+  // Without --resume an existing run is not overwritten; with it, nothing is left to do.
+  EXPECT_THROW(run_suite(options), std::invalid_argument);
+  options.resume = true;
+  EXPECT_EQ(run_suite(options).resumed, 6u);
+
+  // A run cut off after three rows, mid-line, resumes to the same table.
+  const auto cut = dir.path() / "b";
+  std::filesystem::create_directories(cut);
+  std::vector<Result_row> first(rows.begin(), rows.begin() + 3);
+  write_results_csv(cut / "results.csv", first);
+  std::ofstream(cut / "results.csv", std::ios::app) << rows[3].csv().substr(0, 20);
+  options.output = cut;
+  const Run_summary resumed = run_suite(options);
+  EXPECT_EQ(resumed.resumed, 3u);
+  EXPECT_EQ(resumed.ok, 3u);
+  EXPECT_EQ(without_runtimes(read_results_csv(cut / "results.csv")), without_runtimes(rows));
+
+  // Shards 1/2 and 2/2, merged, are the whole run.
+  options.resume = false;
+  for (const std::size_t shard : {1, 2}) {
+    options.output = dir.path() / ("shard" + std::to_string(shard));
+    options.shard = shard, options.shards = 2;
+    EXPECT_EQ(run_suite(options).jobs, 3u);
+  }
+  const std::vector<std::filesystem::path> shards{dir.path() / "shard1", dir.path() / "shard2"};
+  EXPECT_EQ(merge_runs(shards, dir.path() / "merged", false), 6u);
+  EXPECT_EQ(without_runtimes(read_results_csv(dir.path() / "merged" / "results.csv")), without_runtimes(rows));
+}
+
+TEST(Run, RejectsUnknownSuitesAlgorithmsAndShards) {
+  testing::TemporaryDirectory dir;
+  EXPECT_THROW(run_suite({.suite = "no-such-suite", .output = dir.path()}), std::invalid_argument);
+  EXPECT_THROW(run_suite({.suite = "smoke", .output = dir.path(), .algorithms = {"no-such"}}), std::invalid_argument);
+  EXPECT_THROW(run_suite({.suite = "smoke", .output = dir.path(), .shard = 3, .shards = 2}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace curvebench::bench
