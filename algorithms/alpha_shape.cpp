@@ -6,8 +6,8 @@
 namespace curvebench::algorithms {
 
 std::vector<Edge> alpha_shape_reconstruction(std::span<const Point> points, std::optional<double> alpha) {
-  if (!alpha) alpha = graphs::connecting_alpha(graphs::Delaunay_triangulation(points));
-  return graphs::edge_list(graphs::alpha_shape_boundary(points, *alpha));
+  const graphs::Delaunay_triangulation dt(points);
+  return graphs::edge_list(graphs::alpha_shape_boundary(dt, alpha ? *alpha : graphs::connecting_alpha(dt)));
 }
 
 Algorithm alpha_shape_algorithm() {

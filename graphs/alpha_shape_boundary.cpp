@@ -3,60 +3,49 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <CGAL/Alpha_shape_2.h>
-#include <CGAL/Alpha_shape_face_base_2.h>
-#include <CGAL/Alpha_shape_vertex_base_2.h>
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
 #include "geometry/exact_sign.h"
-#include "graphs/delaunay_triangulation.h"
 
 namespace curvebench::graphs {
 namespace {
 
-using Kernel = geometry::Kernel;
-using Exact_alpha = CGAL::Tag_true;
-using Vertex_base = CGAL::Alpha_shape_vertex_base_2<Kernel, CGAL::Triangulation_vertex_base_with_info_2<Vertex, Kernel>,
-                                                    Exact_alpha>;
-using Face_base = CGAL::Alpha_shape_face_base_2<Kernel, CGAL::Triangulation_face_base_2<Kernel>, Exact_alpha>;
-using Tds = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
-using Alpha_shape = CGAL::Alpha_shape_2<CGAL::Delaunay_triangulation_2<Kernel, Tds>, Exact_alpha>;
+using geometry::cross, geometry::difference, geometry::exact_sign, geometry::squared_length;
 
-// On a line the alpha-complex is the chain of consecutive points no farther apart than
-// the eraser's diameter 2 sqrt(alpha); CGAL's Alpha_shape_2 only handles dimension 2.
-std::vector<Edge> collinear_boundary(const Delaunay_triangulation& chain, double alpha) {
-  std::vector<Edge> edges;
-  for (const Delaunay_edge& e : chain.edges()) {
-    const auto fits = geometry::exact_sign([&]<class NT>(std::type_identity<NT>) {
-      return NT(4) * NT(alpha) -
-             geometry::squared_length(geometry::difference<NT>(chain.point(e.target), chain.point(e.source)));
-    });
-    if (fits != CGAL::NEGATIVE) edges.emplace_back(e.source, e.target);
-  }
-  return edges;
+// Squared circumradius of (a, b, c) <= alpha, for a proper triangle: with u = b - a,
+// v = c - a, R^2 = |u|^2 |v|^2 |u - v|^2 / (4 (u x v)^2).
+bool triangle_in_complex(const Point& a, const Point& b, const Point& c, double alpha) {
+  return exact_sign([&]<class NT>(std::type_identity<NT>) {
+           const auto u = difference<NT>(b, a), v = difference<NT>(c, a);
+           const NT area2 = cross(u, v);
+           return NT(4) * NT(alpha) * area2 * area2 -
+                  squared_length(u) * squared_length(v) * squared_length(difference<NT>(c, b));
+         }) != CGAL::NEGATIVE;
 }
 
 }  // namespace
 
-Graph alpha_shape_boundary(std::span<const Point> points, double alpha) {
+Graph alpha_shape_boundary(const Delaunay_triangulation& dt, double alpha) {
   if (!std::isfinite(alpha) || alpha < 0)
     throw std::invalid_argument("alpha-shape: alpha must be a finite number >= 0");
-  std::vector<std::pair<Point, Vertex>> indexed;
-  indexed.reserve(points.size());
-  for (Vertex i = 0; i < points.size(); ++i) indexed.emplace_back(points[i], i);
-
-  Alpha_shape shape(indexed.begin(), indexed.end(), alpha, Alpha_shape::GENERAL);
-  if (shape.number_of_vertices() != points.size() || shape.dimension() < 2) {
-    const Delaunay_triangulation chain(points);  // reports duplicates; collinear otherwise
-    return make_graph(points, collinear_boundary(chain, alpha));
-  }
   std::vector<Edge> edges;
-  for (auto e = shape.alpha_shape_edges_begin(); e != shape.alpha_shape_edges_end(); ++e) {
-    const auto& [face, i] = *e;
-    edges.emplace_back(face->vertex(Alpha_shape::cw(i))->info(), face->vertex(Alpha_shape::ccw(i))->info());
+  for (const Delaunay_edge& e : dt.edges()) {
+    const Point &p = dt.point(e.source), &q = dt.point(e.target);
+    int triangles = 0;
+    bool attached = false;  // a point strictly inside the diametral circle of pq
+    for (const Vertex apex : {e.left, e.right}) {
+      if (apex == no_vertex) continue;
+      triangles += triangle_in_complex(p, q, dt.point(apex), alpha);
+      attached = attached || CGAL::side_of_bounded_circle(p, q, dt.point(apex)) == CGAL::ON_BOUNDED_SIDE;
+    }
+    const bool singular = triangles == 0 && !attached && exact_sign([&]<class NT>(std::type_identity<NT>) {
+                            return NT(4) * NT(alpha) - squared_length(difference<NT>(q, p));
+                          }) != CGAL::NEGATIVE;
+    if (triangles == 1 || singular) edges.emplace_back(e.source, e.target);
   }
-  return make_graph(points, edges);
+  return make_graph(dt.points(), edges);
+}
+
+Graph alpha_shape_boundary(std::span<const Point> points, double alpha) {
+  return alpha_shape_boundary(Delaunay_triangulation(points), alpha);
 }
 
 }  // namespace curvebench::graphs

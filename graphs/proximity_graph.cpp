@@ -39,7 +39,7 @@ constexpr Proximity_graph table[] = {
      [](const Delaunay_triangulation& dt, const Parameters& p) { return k_nearest_neighbor_graph(dt, p.k); }},
     {"alpha", "alpha-shape boundary (--alpha, squared radius)",
      [](const Delaunay_triangulation& dt, const Parameters& p) {
-       return alpha_shape_boundary(dt.points(), p.alpha.value_or(connecting_alpha(dt)));
+       return alpha_shape_boundary(dt, p.alpha ? *p.alpha : connecting_alpha(dt));
      }},
 };
 
@@ -53,10 +53,31 @@ const Proximity_graph* find_proximity_graph(std::string_view name) {
 }
 
 double connecting_alpha(const Delaunay_triangulation& dt) {
-  const Graph tree = euclidean_minimum_spanning_tree(dt);
+  // The longest EMST edge is the bottleneck: the shortest length at which the Delaunay
+  // edges connect every point. Rounding is monotone, so Kruskal on the rounded squared
+  // lengths, in any order of ties, stops at the rounded bottleneck, the value the exact
+  // EMST would give; no exact order is needed for a value that only sets a parameter.
+  std::vector<std::pair<double, std::uint32_t>> by_length;
+  by_length.reserve(dt.edges().size());
+  for (std::uint32_t k = 0; k < dt.edges().size(); ++k) {
+    const Delaunay_edge& e = dt.edges()[k];
+    by_length.emplace_back(CGAL::squared_distance(dt.point(e.source), dt.point(e.target)), k);
+  }
+  std::sort(by_length.begin(), by_length.end());
+  std::vector<Vertex> parent(dt.size());
+  for (Vertex v = 0; v < parent.size(); ++v) parent[v] = v;
+  const auto root = [&](Vertex v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
   double longest = 0;
-  for (const auto e : boost::make_iterator_range(boost::edges(tree)))
-    longest = std::max(longest, boost::get(boost::edge_weight, tree, e));
+  std::size_t joined = 0;
+  for (const auto& [length, k] : by_length) {
+    if (joined + 1 >= dt.size()) break;
+    const Vertex a = root(dt.edges()[k].source), b = root(dt.edges()[k].target);
+    if (a == b) continue;
+    parent[a] = b, ++joined, longest = length;
+  }
   // The weight is a rounded squared length: step up a few ulps so the edge is surely in.
   double alpha = longest / 4;
   for (int i = 0; i < 4; ++i) alpha = std::nextafter(alpha, std::numeric_limits<double>::infinity());

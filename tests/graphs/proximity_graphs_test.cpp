@@ -5,6 +5,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "graphs/alpha_shape_boundary.h"
@@ -156,6 +158,20 @@ RC_GTEST_PROP(AlphaShapeBoundary, EqualsBruteForce, ()) {
   const double alpha = *rc::gen::element(0.0, 0.25, 0.5, 0.625, 1.0, 1.25, 2.0, 3.0, 1e9);
   RC_TAG(alpha);
   RC_ASSERT(edges_of(alpha_shape_boundary(points, alpha)) == testing::brute_force_alpha_shape_boundary(points, alpha));
+}
+
+// The default alpha: a quarter of the longest (exact) EMST edge's rounded squared length,
+// four ulps up.
+RC_GTEST_PROP(AlphaShapeBoundary, ConnectingAlphaIsTheLongestEmstEdge, ()) {
+  const auto points = *point_sets(30);
+  const Delaunay_triangulation dt(points);
+  const Graph tree = euclidean_minimum_spanning_tree(dt);
+  double longest = 0;
+  for (const auto e : boost::make_iterator_range(boost::edges(tree)))
+    longest = std::max(longest, boost::get(boost::edge_weight, tree, e));
+  double expected = longest / 4;
+  for (int i = 0; i < 4; ++i) expected = std::nextafter(expected, std::numeric_limits<double>::infinity());
+  RC_ASSERT(connecting_alpha(dt) == std::min(expected, std::numeric_limits<double>::max()));
 }
 
 TEST(ProximityGraphs, EveryBuilderRejectsDuplicatePoints) {
