@@ -1,6 +1,8 @@
 #include "graphs/euclidean_minimum_spanning_tree.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -31,7 +33,24 @@ Graph euclidean_minimum_spanning_tree(const Delaunay_triangulation& dt) {
     return s == CGAL::POSITIVE ||
            (s == CGAL::ZERO && std::tie(a.source, a.target) < std::tie(b.source, b.target));
   };
-  std::sort(candidates.begin(), candidates.end(), shorter);
+  // Sorting 3n candidates with the exact comparator costs more than the triangulation:
+  // sort by the rounded keys (plain doubles), then put in exact order each run of
+  // consecutive keys that the filter cannot tell apart. Where it can, the keys' error
+  // intervals k (1 +- 2^-48) are disjoint, and since both ends grow with k, every key
+  // before that point is certainly shorter than every key after it: the result is the
+  // exact order. (Keys below 2^-900 may carry subnormal error: never split after one.)
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.squared_length < b.squared_length; });
+  const auto separated = [](double shorter_key, double longer_key) {
+    return shorter_key >= 0x1p-900 && std::isfinite(longer_key) &&
+           longer_key - shorter_key > (shorter_key + longer_key) * 0x1p-48;
+  };
+  for (auto run = candidates.begin(); run != candidates.end();) {
+    auto end = std::next(run);
+    while (end != candidates.end() && !separated(std::prev(end)->squared_length, end->squared_length)) ++end;
+    if (std::distance(run, end) > 1) std::sort(run, end, shorter);
+    run = end;
+  }
 
   std::vector<std::size_t> rank(dt.size()), parent(dt.size());
   boost::disjoint_sets<std::size_t*, std::size_t*> components(rank.data(), parent.data());
