@@ -20,9 +20,9 @@ struct Evaluation {
 
 // `reconstruction`'s and `truth`'s edges are canonical. `on_input_points`: the
 // reconstruction's points are the input points that `truth` indexes (an interpolating
-// algorithm); only then is `exact` decided (an algorithm that moves points needs a
-// tolerance match, which comes with the first such algorithm). Distances and normals are
-// measured against `original` (the dense true curve) when given, else against `truth`.
+// algorithm); else its points are matched to the input points first (point_matching.h).
+// Distances and normals are measured against `original` (the dense true curve) when
+// given, else against `truth`.
 Evaluation evaluate(const geometry::Polyline_view& reconstruction, bool on_input_points,
                     const geometry::Polyline_view* truth, const geometry::Polyline_view* original);
 

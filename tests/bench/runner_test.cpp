@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "bench/runner/bench_input.h"
+#include "bench/runner/evaluation.h"
 #include "bench/runner/process_pool.h"
 #include "bench/runner/results_table.h"
 #include "bench/runner/run.h"
@@ -114,6 +115,27 @@ TEST(BenchInput, MalformedNamesAreClearErrors) {
     const std::vector<std::string> names{name};
     EXPECT_THROW(make_bench_inputs(names), std::invalid_argument) << name;
   }
+}
+
+// An algorithm that moves points: the reconstruction of a square's corners, each moved a
+// little and listed in another order, is exact; moved halfway to a neighbour, or two
+// points for one corner, it is not.
+TEST(Evaluation, MovedPointsAreMatchedToTheInputPointTheyStandFor) {
+  const std::vector<Point> input{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<Edge> truth{{0, 1}, {0, 3}, {1, 2}, {2, 3}};
+  const geometry::Polyline_view truth_view{input, truth};
+  const auto exact = [&](const std::vector<Point>& output, const std::vector<Edge>& edges) {
+    return evaluate({output, edges}, false, &truth_view, nullptr).exact;
+  };
+  // Output k is input 3 - k, moved by 0.1.
+  const std::vector<Point> moved{{0.1, 1}, {1, 0.9}, {0.9, 0}, {0, 0.1}};
+  const std::vector<Edge> renamed{{0, 1}, {0, 3}, {1, 2}, {2, 3}};
+  EXPECT_EQ(exact(moved, renamed), true);
+  EXPECT_EQ(exact(moved, {{0, 1}, {1, 2}, {2, 3}}), false);                  // an edge missing
+  EXPECT_EQ(exact({{0.5, 1}, {1, 0.9}, {0.9, 0}, {0, 0.1}}, renamed), false);  // halfway: ambiguous
+  EXPECT_EQ(exact({{0.1, 1}, {0.05, 1}, {0.9, 0}, {0, 0.1}}, renamed), false); // two for one corner
+  // On the input points themselves, the edge sets are compared directly.
+  EXPECT_EQ(evaluate({input, truth}, true, &truth_view, nullptr).exact, true);
 }
 
 TEST(Suites, EveryCaseNamesAKnownSourceAndLevel) {
