@@ -12,6 +12,10 @@
 namespace curvebench::geometry {
 namespace {
 
+// An edge far longer than the spacing (a reconstruction much larger than the original)
+// is sampled coarser rather than without end.
+constexpr double max_pieces_per_edge = 4096;
+
 // Over the samples of `from` mapped onto `to`: the largest distance and the
 // length-weighted sum of squared distances, with the total weight.
 struct One_way {
@@ -24,8 +28,8 @@ One_way map_onto(const Polyline_view& from, const Nearest_segment_index& to, dou
   for (const auto& [i, j] : from.edges) {
     const Point &a = from.points[i], &b = from.points[j];
     result.largest = std::max({result.largest, squared_distance(a), squared_distance(b)});
-    const double length = std::sqrt(CGAL::squared_distance(a, b));
-    const double pieces = std::max(1.0, std::ceil(length / spacing));
+    const double length = std::hypot(b.x() - a.x(), b.y() - a.y());  // no overflow on the way
+    const double pieces = std::clamp(std::ceil(length / spacing), 1.0, max_pieces_per_edge);
     for (double k = 0; k < pieces; ++k) {
       const double t = (k + 0.5) / pieces;
       const double d2 = squared_distance(Point(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y())));

@@ -5,10 +5,10 @@
 // each other), and
 //   H_D   = max over both mappings of |s - M(s)|                  (Hausdorff),
 //   RMS_D = sqrt(sum over both mappings of |s - M(s)|^2 / N)      (N samples in all).
-// Samples sit at the midpoints of equal pieces of each edge, at most `spacing` long, each
-// weighted by its piece's length, so RMS_D is the arc-length mean that dense uniform
-// samples approximate, whatever `spacing`; H_D also takes every edge's end points, where
-// the largest distances of polylines often are.
+// Samples sit at the midpoints of equal pieces of each edge, at most `spacing` long (but
+// at most 4096 per edge), each weighted by its piece's length, so RMS_D is the arc-length
+// mean that dense uniform samples approximate, whatever `spacing`; H_D also takes every
+// edge's end points, where the largest distances of polylines often are.
 //
 // Metric values are output, never decisions: evaluated in double.
 #pragma once

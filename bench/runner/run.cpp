@@ -188,40 +188,105 @@ void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> row
   if (report) make_report(dir);
 }
 
+// The jobs of this shard. Job c * A + a runs algorithm a on case c: numbers that do not
+// depend on the shard, so that shards and resumed runs agree on them.
+std::vector<Job> planned_jobs(std::size_t cases, const std::vector<const algorithms::Algorithm*>& chosen,
+                              const Run_options& options) {
+  if (options.shards == 0 || options.shard == 0 || options.shard > options.shards)
+    throw std::invalid_argument("--shard K/N needs 1 <= K <= N");
+  std::vector<Job> jobs;
+  for (std::size_t c = 0; c < cases; ++c)
+    for (std::size_t a = 0; a < chosen.size(); ++a)
+      if (const std::size_t number = c * chosen.size() + a; number % options.shards == options.shard - 1)
+        jobs.push_back({number, c, chosen[a]});
+  return jobs;
+}
+
+// The rows an earlier, interrupted run of the same jobs left in `csv`; none if there is
+// no such file. Throws if there is one and `resume` is off, or if it holds another run.
+std::vector<Result_row> earlier_rows(const std::filesystem::path& csv, const std::vector<Job>& jobs,
+                                     const std::vector<Suite_case>& cases, bool resume) {
+  if (!std::filesystem::exists(csv)) return {};
+  if (!resume) throw std::invalid_argument(csv.string() + " exists: add --resume to continue that run, or choose another -o");
+  std::vector<Result_row> rows = read_results_csv(csv);
+  std::map<std::size_t, const Job*> by_number;
+  for (const Job& job : jobs) by_number[job.number] = &job;
+  for (const Result_row& row : rows) {
+    const auto it = by_number.find(row.job());
+    if (it == by_number.end() || !same_job(row, job_row(*it->second, cases[it->second->case_index])))
+      throw std::invalid_argument(csv.string() + ": job " + row[Column::job] +
+                                  " is not this run's (another suite, algorithm list or shard?)");
+  }
+  return rows;
+}
+
+// The cases of `pending` jobs, in runs of one source: each run's curve is analysed once.
+std::vector<std::vector<std::size_t>> cases_by_source(const std::vector<Job>& pending,
+                                                      const std::vector<Suite_case>& cases) {
+  std::vector<std::vector<std::size_t>> groups;
+  for (const Job& job : pending) {
+    const std::size_t c = job.case_index;
+    if (!groups.empty() && groups.back().back() == c) continue;
+    if (groups.empty() || input_source(cases[groups.back().back()].input) != input_source(cases[c].input))
+      groups.emplace_back();
+    groups.back().push_back(c);
+  }
+  return groups;
+}
+
+// The inputs of the cases in `groups`, made in parallel, or why one could not be made.
+struct Batch_inputs {
+  std::map<std::size_t, Bench_input> inputs;
+  std::map<std::size_t, std::string> errors;
+  bool has(std::size_t c) const { return inputs.contains(c) || errors.contains(c); }
+};
+
+Batch_inputs make_inputs(std::span<const std::vector<std::size_t>> groups, const std::vector<Suite_case>& cases,
+                         std::size_t threads) {
+  std::vector<std::vector<Bench_input>> made(groups.size());
+  std::vector<std::string> failure(groups.size());
+  {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    tbb::parallel_for(std::size_t{0}, groups.size(), [&](std::size_t g) {
+      std::vector<std::string> names;
+      for (const std::size_t c : groups[g]) names.push_back(cases[c].input);
+      try {
+        made[g] = make_bench_inputs(names);
+      } catch (const std::exception& error) {
+        failure[g] = std::string("input: ") + error.what();
+      }
+    });
+  }
+  Batch_inputs batch;
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (std::size_t k = 0; k < groups[g].size(); ++k)
+      if (failure[g].empty()) batch.inputs.emplace(groups[g][k], std::move(made[g][k]));
+      else batch.errors.emplace(groups[g][k], failure[g]);
+  return batch;
+}
+
+// The row of a job whose worker sent none (or nonsense): it crashed or timed out.
+Result_row lost_job_row(const Job& job, const Suite_case& c, std::size_t points, const Task_outcome& outcome) {
+  Result_row row = job_row(job, c);
+  row[Column::n_points] = std::to_string(points);
+  row[Column::status] = outcome.kind == Task_outcome::Kind::timed_out ? "timeout" : "crashed";
+  row[Column::message] = outcome.reason.empty() ? "garbled result from the worker" : outcome.reason;
+  return row;
+}
+
 }  // namespace
 
 Run_summary run_suite(const Run_options& options) {
   const Suite* suite = find_suite(options.suite);
   if (!suite) throw std::invalid_argument("unknown suite '" + options.suite + "' (see `curvebench list suites`)");
-  if (options.shards == 0 || options.shard == 0 || options.shard > options.shards)
-    throw std::invalid_argument("--shard K/N needs 1 <= K <= N");
   const std::vector<const algorithms::Algorithm*> chosen = chosen_algorithms(options.algorithms);
   const std::vector<Suite_case> cases = suite_cases(*suite);
-
-  std::vector<Job> jobs;
-  for (std::size_t c = 0; c < cases.size(); ++c)
-    for (std::size_t a = 0; a < chosen.size(); ++a)
-      if (const std::size_t number = c * chosen.size() + a; number % options.shards == options.shard - 1)
-        jobs.push_back({number, c, chosen[a]});
+  const std::vector<Job> jobs = planned_jobs(cases.size(), chosen, options);
 
   const std::filesystem::path csv = options.output / "results.csv";
   std::filesystem::create_directories(options.output / "pictures");
-  std::vector<Result_row> rows;
-  if (std::filesystem::exists(csv)) {
-    if (!options.resume)
-      throw std::invalid_argument(csv.string() + " exists: add --resume to continue that run, or choose another -o");
-    rows = read_results_csv(csv);
-    std::map<std::size_t, const Job*> by_number;
-    for (const Job& job : jobs) by_number[job.number] = &job;
-    for (const Result_row& row : rows) {
-      const auto it = by_number.find(row.job());
-      if (it == by_number.end() || !same_job(row, job_row(*it->second, cases[it->second->case_index])))
-        throw std::invalid_argument(csv.string() + ": job " + row[Column::job] +
-                                    " is not this run's (another suite, algorithm list or shard?)");
-    }
-  }
+  std::vector<Result_row> rows = earlier_rows(csv, jobs, cases, options.resume);
   write_results_csv(csv, rows);  // drops a line cut off by an interrupted run
-
   std::vector<bool> done(cases.size() * chosen.size(), false);
   for (const Result_row& row : rows) done[row.job()] = true;
   std::vector<Job> pending;
@@ -239,72 +304,39 @@ Run_summary run_suite(const Run_options& options) {
     progress.job_done(status == "ok");
   };
 
+  // Inputs are made in this process, a batch of sources at a time, and reach the worker
+  // processes by fork.
   const std::size_t workers = options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
-  // Inputs are made in the parent, a batch of sources at a time (in parallel, each source's
-  // curve analysed once for all its levels), and shared with the workers by fork.
-  std::vector<std::vector<std::size_t>> groups;  // cases with pending jobs, by consecutive source
-  for (const Job& job : pending) {
-    const std::size_t c = job.case_index;
-    if (!groups.empty() && groups.back().back() == c) continue;
-    if (groups.empty() || input_source(cases[groups.back().back()].input) != input_source(cases[c].input))
-      groups.emplace_back();
-    groups.back().push_back(c);
-  }
-  const std::size_t batch = 8 * workers;
-  std::size_t next_job = 0;
-  for (std::size_t first = 0; first < groups.size(); first += batch) {
-    const std::size_t last = std::min(groups.size(), first + batch);
-    std::map<std::size_t, Bench_input> inputs;
-    std::map<std::size_t, std::string> errors;
-    std::vector<std::vector<Bench_input>> made(last - first);
-    std::vector<std::string> failure(last - first);
-    {
-      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
-      tbb::parallel_for(first, last, [&](std::size_t g) {
-        std::vector<std::string> names;
-        for (const std::size_t c : groups[g]) names.push_back(cases[c].input);
-        try {
-          made[g - first] = make_bench_inputs(names);
-        } catch (const std::exception& error) {
-          failure[g - first] = std::string("input: ") + error.what();
-        }
-      });
-    }
-    for (std::size_t g = first; g < last; ++g)
-      for (std::size_t k = 0; k < groups[g].size(); ++k)
-        if (failure[g - first].empty()) inputs.emplace(groups[g][k], std::move(made[g - first][k]));
-        else errors.emplace(groups[g][k], failure[g - first]);
-
-    std::vector<Job> batch_jobs;
-    for (; next_job < pending.size() && (inputs.contains(pending[next_job].case_index) ||
-                                          errors.contains(pending[next_job].case_index));
-         ++next_job) {
-      const Job& job = pending[next_job];
-      if (const auto error = errors.find(job.case_index); error != errors.end()) {
+  const std::vector<std::vector<std::size_t>> groups = cases_by_source(pending, cases);
+  std::size_t next = 0;  // the first pending job not yet run
+  for (std::size_t first = 0; first < groups.size(); first += 8 * workers) {
+    const auto batch_groups = std::span(groups).subspan(first, std::min(8 * workers, groups.size() - first));
+    const Batch_inputs batch = make_inputs(batch_groups, cases, workers);
+    std::vector<Job> runnable;
+    for (; next < pending.size() && batch.has(pending[next].case_index); ++next) {
+      const Job& job = pending[next];
+      if (const auto error = batch.errors.find(job.case_index); error != batch.errors.end()) {
         Result_row row = job_row(job, cases[job.case_index]);
         row[Column::status] = "failed";
         row[Column::message] = error->second;
         record(row);
       } else {
-        batch_jobs.push_back(job);
+        runnable.push_back(job);
       }
     }
     run_in_processes(
-        batch_jobs.size(), {.workers = workers, .timeout_seconds = options.timeout_seconds, .memory_limit_bytes = 8ull << 30},
+        runnable.size(), {.workers = workers, .timeout_seconds = options.timeout_seconds, .memory_limit_bytes = 8ull << 30},
         [&](std::size_t k) {
-          const Job& job = batch_jobs[k];
-          return run_job(job, cases[job.case_index], inputs.at(job.case_index), options);
+          const Job& job = runnable[k];
+          return run_job(job, cases[job.case_index], batch.inputs.at(job.case_index), options);
         },
-        [&](std::size_t k, Task_outcome outcome) {
-          const Job& job = batch_jobs[k];
+        [&](std::size_t k, const Task_outcome& outcome) {
+          const Job& job = runnable[k];
+          const Suite_case& c = cases[job.case_index];
           std::optional<Result_row> row;
           if (outcome.kind == Task_outcome::Kind::finished) row = Result_row::parse_csv(outcome.output);
-          if (!row || !same_job(*row, job_row(job, cases[job.case_index]))) {
-            row = job_row(job, cases[job.case_index]);
-            (*row)[Column::n_points] = std::to_string(inputs.at(job.case_index).points.size());
-            (*row)[Column::status] = outcome.kind == Task_outcome::Kind::timed_out ? "timeout" : "crashed";
-            (*row)[Column::message] = outcome.reason.empty() ? "garbled result from the worker" : outcome.reason;
-          }
+          if (!row || !same_job(*row, job_row(job, c)))
+            row = lost_job_row(job, c, batch.inputs.at(job.case_index).points.size(), outcome);
           record(*row);
         });
   }
