@@ -15,22 +15,8 @@ struct Run_command_options {
   bool no_report = false, quiet = false;
 };
 
-// "K/N" -> (K, N).
-std::pair<std::size_t, std::size_t> parse_shard(const std::string& text) {
-  const auto slash = text.find('/');
-  try {
-    if (slash != std::string::npos) {
-      std::size_t used_k = 0, used_n = 0;
-      const std::size_t k = std::stoul(text.substr(0, slash), &used_k), n = std::stoul(text.substr(slash + 1), &used_n);
-      if (used_k == slash && used_n == text.size() - slash - 1) return {k, n};
-    }
-  } catch (const std::exception&) {
-  }
-  throw std::invalid_argument("--shard '" + text + "': expected K/N, e.g. 3/16");
-}
-
 void run(Run_command_options& o) {
-  if (!o.shard.empty()) std::tie(o.run.shard, o.run.shards) = parse_shard(o.shard);
+  if (!o.shard.empty()) std::tie(o.run.shard, o.run.shards) = bench::parse_shard(o.shard);
   o.run.pictures = o.pictures == "none" ? bench::Pictures::none
                    : o.pictures == "failures" ? bench::Pictures::failures
                                               : bench::Pictures::all;

@@ -81,8 +81,8 @@ def ordered(values):
     return list(dict.fromkeys(values))
 
 
-COLUMNS = ("job suite input level algorithm params n_points status exact hausdorff rms normal_deviation manifold "
-           "components open_components closed_components unconnected runtime_ms picture message").split()
+COLUMNS = ("job suite input level algorithm params n_points epsilon rho status exact hausdorff rms normal_deviation "
+           "manifold components open_components closed_components unconnected runtime_ms picture message").split()
 
 
 def read_rows(path):
@@ -242,6 +242,63 @@ def status_chart(run, path):
     save(fig, path)
 
 
+def read_theorems(path):
+    """{algorithm: proven epsilon bound} from DIR/theorems.csv (written by `curvebench run`), or {}."""
+    if not path.is_file():
+        return {}
+    with open(path, newline="", encoding="utf-8") as f:
+        return {r["algorithm"]: float(r["epsilon_below"]) for r in csv.DictReader(f)}
+
+
+BIN = 0.05  # width of the measured-epsilon and rho bins of the breakdown
+BREAKDOWN_UP_TO = 1.0  # sparser samplings (or lfs near 0 at an unsampled corner) are left out
+
+
+def breakdown(run, rows, measure, theorems):
+    """{algorithm: [(bin start, cases, exact)]} over rows with a measured value, for algorithms with a theorem."""
+    table = {}
+    for algorithm in (a for a in run.algorithms if a in theorems):
+        bins = collections.defaultdict(lambda: [0, 0])
+        for r in rows:
+            value = number(r[measure])
+            if r["algorithm"] != algorithm or value is None or not value <= BREAKDOWN_UP_TO or r["_exact"] is None:
+                continue
+            b = bins[math.floor(value / BIN + 1e-9) * BIN]
+            b[0] += 1
+            b[1] += bool(r["_exact"])
+        table[algorithm] = sorted((start, n, exact) for start, (n, exact) in bins.items())
+    return table
+
+
+def breakdown_chart(run, table, theorems, measure, path):
+    """Exact-reconstruction rate per bin of the measured value, a line per algorithm, its bound dashed."""
+    fig, ax = plt.subplots(figsize=(9, 4.2))
+    for algorithm, bins in table.items():
+        colour = run.colour[algorithm]
+        ax.plot([s + BIN / 2 for s, _, _ in bins], [100 * e / n for _, n, e in bins], marker="o", ms=3,
+                color=colour, label=algorithm)
+        if measure == "epsilon":
+            ax.axvline(theorems[algorithm], color=colour, ls="--", lw=1)
+    ax.set_xlabel(f"measured {measure} (bins of {BIN})" + ("; dashed: the proven bound" if measure == "epsilon" else ""))
+    ax.set_ylabel("exact reconstructions [%]")
+    ax.set_ylim(-3, 103)
+    ax.set_title(f"certify: exact reconstruction against the measured {measure}")
+    ax.grid(alpha=0.3)
+    ax.legend(title="algorithm", loc="upper left", bbox_to_anchor=(1.01, 1), frameon=False)
+    save(fig, path)
+
+
+def write_breakdown_csv(path, tables):
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        out = csv.writer(f)
+        out.writerow(["measure", "algorithm", "bin_start", "bin_end", "cases", "exact", "exact_percent"])
+        for measure, table in tables.items():
+            for algorithm, bins in table.items():
+                for start, n, exact in bins:
+                    out.writerow([measure, algorithm, f"{start:.2f}", f"{start + BIN:.2f}", n, exact,
+                                  f"{100 * exact / n:.1f}"])
+
+
 def make_charts(run, charts_dir):
     """Writes every chart; returns {section: [(file name, caption)]} with section None for the overall ones."""
     charts_dir.mkdir(parents=True, exist_ok=True)
@@ -266,6 +323,19 @@ def make_charts(run, charts_dir):
                          charts_dir / name, percent_axis=True)
             made[suite].append((name, "Share of jobs whose edge set equals the ground truth; "
                                       f"failed jobs count as not exact; {NOT_DRAWN} = no ground truth."))
+    # The empirical breakdown of the theorems: suite `certify`, measured epsilon and rho.
+    theorems = read_theorems(charts_dir.parent / "theorems.csv")
+    certify_rows = run.suite_rows("certify") if "certify" in run.suites else []
+    tables = {m: breakdown(run, certify_rows, m, theorems) for m in ("epsilon", "rho")}
+    for measure, table in tables.items():
+        if any(table.values()):
+            name = f"breakdown-{measure}.svg"
+            breakdown_chart(run, table, theorems, measure, charts_dir / name)
+            made["certify"].append((name, f"Share of samplings reconstructed exactly per bin of their measured {measure} "
+                                          f"(up to {BREAKDOWN_UP_TO}), for every algorithm with a proven condition; "
+                                          "written as breakdown.csv."))
+    if any(any(t.values()) for t in tables.values()):
+        write_breakdown_csv(charts_dir.parent / "breakdown.csv", tables)
     return made
 
 

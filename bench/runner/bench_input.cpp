@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "certify/sampling_measure.h"
 #include "geometry/curve_spec.h"
 #include "geometry/point_io.h"
 #include "geometry/sampling.h"
@@ -149,7 +150,13 @@ std::vector<Bench_input> make_bench_inputs(std::span<const std::string> names) {
   for (const std::string& name : names) {
     const Settings settings = parse_settings(name);
     geometry::Sample sample = perturbed(drawn(lfs, settings, name), settings, &lfs);
-    inputs.push_back({name, std::move(sample.points), geometry::canonical_edges(std::move(sample.edges)), curve});
+    Bench_input input{name, {}, geometry::canonical_edges(sample.edges), curve};
+    if (!settings.contains("noise") && !settings.contains("lfs-noise") && !settings.contains("outliers")) {
+      input.epsilon = certify::measure_epsilon(lfs, sample.points, 0).epsilon;
+      input.rho = certify::measure_rho(lfs, sample, 0).rho;
+    }
+    input.points = std::move(sample.points);
+    inputs.push_back(std::move(input));
   }
   return inputs;
 }

@@ -12,9 +12,10 @@ namespace curvebench::bench {
 namespace {
 
 constexpr std::string_view names[column_count] = {
-    "job",      "suite",      "input",           "level",           "algorithm",   "params",     "n_points",
-    "status",   "exact",      "hausdorff",       "rms",             "normal_deviation", "manifold", "components",
-    "open_components", "closed_components", "unconnected", "runtime_ms", "picture", "message"};
+    "job",        "suite",      "input",           "level",           "algorithm",       "params",
+    "n_points",   "epsilon",    "rho",             "status",          "exact",           "hausdorff",
+    "rms",        "normal_deviation", "manifold", "components",      "open_components", "closed_components",
+    "unconnected", "runtime_ms", "picture",        "message"};
 
 enum class Kind { integer, real, boolean, text };
 
@@ -23,7 +24,8 @@ Kind kind_of(std::size_t column) {
     case Column::job: case Column::n_points: case Column::components: case Column::open_components:
     case Column::closed_components: case Column::unconnected:
       return Kind::integer;
-    case Column::hausdorff: case Column::rms: case Column::normal_deviation: case Column::runtime_ms:
+    case Column::epsilon: case Column::rho: case Column::hausdorff: case Column::rms: case Column::normal_deviation:
+    case Column::runtime_ms:
       return Kind::real;
     case Column::exact: case Column::manifold:
       return Kind::boolean;
@@ -56,7 +58,10 @@ std::optional<std::vector<std::string>> split_csv(std::string_view line) {
 
 std::string header_line() {
   std::string line;
-  for (const std::string_view name : names) line += (line.empty() ? "" : ",") + std::string(name);
+  for (const std::string_view name : names) {
+    if (!line.empty()) line += ',';
+    line += name;
+  }
   return line;
 }
 

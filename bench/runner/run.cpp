@@ -22,6 +22,7 @@
 #include "bench/runner/process_pool.h"
 #include "bench/runner/results_table.h"
 #include "bench/runner/suite.h"
+#include "certify/theorems.h"
 #include "geometry/svg_picture.h"
 
 namespace curvebench::bench {
@@ -99,10 +100,18 @@ void write_picture(const std::filesystem::path& file, const Bench_input& input, 
   picture.write(file);
 }
 
-// Runs in a worker process: the job's row, as a CSV line.
-std::string run_job(const Job& job, const Suite_case& c, const Bench_input& input, const Run_options& options) {
+// The job's row with what is known of its input before the algorithm runs.
+Result_row input_row(const Job& job, const Suite_case& c, const Bench_input& input) {
   Result_row row = job_row(job, c);
   row[Column::n_points] = std::to_string(input.points.size());
+  if (input.epsilon) row[Column::epsilon] = format_number(*input.epsilon);
+  if (input.rho) row[Column::rho] = format_number(*input.rho);
+  return row;
+}
+
+// Runs in a worker process: the job's row, as a CSV line.
+std::string run_job(const Job& job, const Suite_case& c, const Bench_input& input, const Run_options& options) {
+  Result_row row = input_row(job, c, input);
   try {
     const auto start = Clock::now();
     const algorithms::Reconstruction result = algorithms::reconstruct(*job.algorithm, input.points);
@@ -185,6 +194,12 @@ void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> row
   std::ranges::sort(rows, {}, &Result_row::job);
   write_results_csv(dir / "results.csv", rows);
   write_results_json(dir / "results.json", rows);
+  // The proven bounds, for the report's breakdown chart (certify/theorems.h).
+  std::ofstream theorems(dir / "theorems.csv");
+  theorems << "algorithm,epsilon_below\n";
+  for (const certify::Theorem& theorem : certify::theorems())
+    theorems << theorem.algorithm->name << ',' << format_number(theorem.epsilon_below) << '\n';
+  theorems.close();
   if (report) make_report(dir);
 }
 
@@ -266,9 +281,8 @@ Batch_inputs make_inputs(std::span<const std::vector<std::size_t>> groups, const
 }
 
 // The row of a job whose worker sent none (or nonsense): it crashed or timed out.
-Result_row lost_job_row(const Job& job, const Suite_case& c, std::size_t points, const Task_outcome& outcome) {
-  Result_row row = job_row(job, c);
-  row[Column::n_points] = std::to_string(points);
+Result_row lost_job_row(const Job& job, const Suite_case& c, const Bench_input& input, const Task_outcome& outcome) {
+  Result_row row = input_row(job, c, input);
   row[Column::status] = outcome.kind == Task_outcome::Kind::timed_out ? "timeout" : "crashed";
   row[Column::message] = outcome.reason.empty() ? "garbled result from the worker" : outcome.reason;
   return row;
@@ -279,8 +293,11 @@ Result_row lost_job_row(const Job& job, const Suite_case& c, std::size_t points,
 Run_summary run_suite(const Run_options& options) {
   const Suite* suite = find_suite(options.suite);
   if (!suite) throw std::invalid_argument("unknown suite '" + options.suite + "' (see `curvebench list suites`)");
-  const std::vector<const algorithms::Algorithm*> chosen = chosen_algorithms(options.algorithms);
-  const std::vector<Suite_case> cases = suite_cases(*suite);
+  return run_cases(suite_cases(*suite), chosen_algorithms(options.algorithms), options);
+}
+
+Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen,
+                      const Run_options& options) {
   const std::vector<Job> jobs = planned_jobs(cases.size(), chosen, options);
 
   const std::filesystem::path csv = options.output / "results.csv";
@@ -336,7 +353,7 @@ Run_summary run_suite(const Run_options& options) {
           std::optional<Result_row> row;
           if (outcome.kind == Task_outcome::Kind::finished) row = Result_row::parse_csv(outcome.output);
           if (!row || !same_job(*row, job_row(job, c)))
-            row = lost_job_row(job, c, batch.inputs.at(job.case_index).points.size(), outcome);
+            row = lost_job_row(job, c, batch.inputs.at(job.case_index), outcome);
           record(*row);
         });
   }
@@ -366,6 +383,19 @@ std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std:
   const std::size_t count = rows.size();
   write_outputs(output, std::move(rows), report);
   return count;
+}
+
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  try {
+    if (slash != std::string::npos) {
+      std::size_t used_k = 0, used_n = 0;
+      const std::size_t k = std::stoul(text.substr(0, slash), &used_k), n = std::stoul(text.substr(slash + 1), &used_n);
+      if (used_k == slash && used_n == text.size() - slash - 1) return {k, n};
+    }
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument("--shard '" + text + "': expected K/N, e.g. 3/16");
 }
 
 bool make_report(const std::filesystem::path& dir) {

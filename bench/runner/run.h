@@ -16,6 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/algorithm.h"
+#include "bench/runner/suite.h"
+
 namespace curvebench::bench {
 
 enum class Pictures { all, failures, none };
@@ -43,11 +46,20 @@ struct Run_summary {
 // existing results.csv without --resume (or one from another suite definition).
 Run_summary run_suite(const Run_options& options);
 
+// The runner under run_suite, for callers that make their own cases (the certifier) or
+// algorithms (a test's deliberately broken one): every algorithm on every case, as jobs
+// case * algorithms + algorithm. `options.suite` and `options.algorithms` are not read.
+Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& algorithms,
+                      const Run_options& options);
+
 // Combines the results of shard runs into `output` (rows by job, pictures copied) and
 // writes results.json and, if asked, the report. Throws std::invalid_argument if two
 // shards disagree on a job.
 std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output,
                        bool report);
+
+// "K/N" as (K, N), for --shard; throws std::invalid_argument naming the text otherwise.
+std::pair<std::size_t, std::size_t> parse_shard(const std::string& text);
 
 // Writes DIR/report.html and DIR/charts/ from DIR/results.csv with /usr/bin/python3 and
 // matplotlib; false, with the reason on stderr, if that fails.

@@ -1,0 +1,154 @@
+#include "bench/runner/certification.h"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "bench/runner/bench_input.h"
+#include "bench/runner/results_table.h"
+#include "certify/theorems.h"
+#include "geometry/curve_spec.h"
+#include "geometry/edge_io.h"
+#include "geometry/point_io.h"
+
+namespace curvebench::bench {
+namespace {
+
+using certify::Verdict;
+
+constexpr std::string_view suite_name = "certify";
+constexpr std::size_t max_counterexamples = 5;  // shrinking costs a few runs each
+
+std::string fourier_source(std::uint64_t seed, int harmonics) {
+  return "fourier:seed=" + std::to_string(seed) + ",harmonics=" + std::to_string(harmonics);
+}
+
+// The verdict of one finished row.
+Verdict verdict_of(const certify::Theorem& theorem, const Result_row& row) {
+  const double epsilon = row[Column::epsilon].empty() ? INFINITY : std::stod(row[Column::epsilon]);
+  return certify::classify(theorem, epsilon, row[Column::status] == "ok" && row[Column::exact] == "1");
+}
+
+// Runs `algorithm` on one input in a scratch directory: its row.
+Result_row run_one(const algorithms::Algorithm& algorithm, const std::string& input, const Run_options& base,
+                   const std::filesystem::path& directory, Pictures pictures) {
+  std::filesystem::remove_all(directory);
+  Run_options options = base;
+  options.output = directory, options.resume = false, options.shard = 1, options.shards = 1;
+  options.pictures = pictures, options.report = false, options.progress = false;
+  run_cases({{std::string(suite_name), input, ""}}, {&algorithm}, options);
+  return read_results_csv(directory / "results.csv").at(0);
+}
+
+// Simpler inputs than `input`, simplest first: a circle at the same epsilon, the same
+// curve with one harmonic fewer, then a coarser sampling (fewer points) half-way to the
+// bound.
+std::vector<std::string> simpler_inputs(const std::string& input, double epsilon, double bound) {
+  const std::string source(input_source(input));
+  std::vector<std::string> simpler;
+  const auto at = [](const std::string& s, double e) { return s + "|epsilon=" + format_number(e); };
+  if (!source.starts_with("circle:")) simpler.push_back(at("circle:r=1", epsilon));
+  if (const auto h = source.find(",harmonics="); source.starts_with("fourier:") && h != std::string::npos) {
+    const int harmonics = std::stoi(source.substr(h + 11));
+    if (harmonics > 0) simpler.push_back(at(source.substr(0, h) + ",harmonics=" + std::to_string(harmonics - 1), epsilon));
+  }
+  const double coarser = epsilon + (0.99 * bound - epsilon) / 2;
+  if (coarser - epsilon > 1e-3 * bound) simpler.push_back(at(source, coarser));
+  return simpler;
+}
+
+double epsilon_setting(const std::string& input) {
+  const auto at = input.rfind("|epsilon=");
+  return std::stod(input.substr(at + 9));
+}
+
+// Greedy shrinking: take the first simpler input that still fails under a verified
+// hypothesis, until none does.
+Counterexample shrink(const algorithms::Algorithm& algorithm, const certify::Theorem& theorem, std::string input,
+                      const Run_options& options, const std::filesystem::path& directory) {
+  const std::filesystem::path scratch = directory / "shrinking";
+  for (bool smaller = true; smaller;) {
+    smaller = false;
+    for (const std::string& candidate : simpler_inputs(input, epsilon_setting(input), theorem.epsilon_below)) {
+      const Result_row row = run_one(algorithm, candidate, options, scratch, Pictures::none);
+      if (verdict_of(theorem, row) == Verdict::failure) {
+        input = candidate, smaller = true;
+        break;
+      }
+    }
+  }
+  std::filesystem::remove_all(scratch);
+
+  // The counterexample: its run (row and picture), its files and how to replay it.
+  const Result_row row = run_one(algorithm, input, options, directory, Pictures::all);
+  const std::vector<std::string> names{input};
+  const Bench_input made = make_bench_inputs(names).front();
+  geometry::write_points(directory / "points.xy", made.points);
+  geometry::write_edges(directory / "truth.edges", *made.truth);
+  std::ofstream replay(directory / "replay.sh");
+  replay << "#!/bin/sh\n# " << algorithm.name << " does not reconstruct " << input << "\n# (" << made.points.size()
+         << " points, measured epsilon " << row[Column::epsilon] << " < " << theorem.epsilon_below
+         << "). Run from this directory with curvebench on PATH.\n"
+         << "curvebench reconstruct -a " << algorithm.name
+         << " -i points.xy -o reconstruction.edges --svg reconstruction.svg\n"
+         << "curvebench evaluate -i points.xy -e reconstruction.edges -g truth.edges\n";
+  return {input, made.points.size(), std::stod(row[Column::epsilon]), directory};
+}
+
+}  // namespace
+
+std::vector<Suite_case> certification_cases(const Certify_options& options, double epsilon) {
+  std::vector<std::string> sources;
+  if (options.curves == "fourier") {
+    for (std::size_t i = 0; i < options.count; ++i)
+      sources.push_back(fourier_source((options.seed << 32) + i, 1 + static_cast<int>(i % 8)));
+  } else if (options.curves == "svg" || options.curves == "glyphs") {
+    std::vector<std::string> all;
+    if (options.curves == "glyphs") {
+      all = geometry::expand_curve_specs("glyph:*");
+    } else {
+      for (const auto& file : std::filesystem::directory_iterator(resolve_data_path("data/svg")))
+        if (file.path().extension() == ".svg") all.push_back("svg:data/svg/" + file.path().filename().string());
+      std::ranges::sort(all);
+    }
+    const std::size_t step = std::max<std::size_t>(1, all.size() / std::max<std::size_t>(options.count, 1));
+    for (std::size_t i = 0; i < all.size() && sources.size() < options.count; i += step) sources.push_back(all[i]);
+  } else {
+    throw std::invalid_argument("--curves must be fourier, svg or glyphs, not '" + options.curves + "'");
+  }
+  std::vector<Suite_case> cases;
+  for (const std::string& source : sources)
+    cases.push_back({std::string(suite_name), source + "|epsilon=" + format_number(epsilon), ""});
+  return cases;
+}
+
+Certify_summary certify_algorithm(const algorithms::Algorithm& algorithm, const Certify_options& options) {
+  const auto theorem = certify::theorem_of(algorithm);
+  if (!theorem) throw std::invalid_argument(std::string(algorithm.name) + " has no proven epsilon bound to certify");
+  const double epsilon = options.epsilon.value_or(options.below_bound * theorem->epsilon_below);
+  if (!(epsilon > 0)) throw std::invalid_argument("the epsilon to sample at must be positive");
+
+  Run_options run = options.run;
+  run.report = false;
+  if (!run.resume) std::filesystem::remove_all(run.output);
+  run_cases(certification_cases(options, epsilon), {&algorithm}, run);
+
+  Certify_summary summary{.algorithm = std::string(algorithm.name), .bound = theorem->epsilon_below,
+                          .requested_epsilon = epsilon};
+  for (const Result_row& row : read_results_csv(run.output / "results.csv")) {
+    ++summary.cases;
+    switch (verdict_of(*theorem, row)) {
+      case Verdict::passed: ++summary.passed; break;
+      case Verdict::inconclusive: ++summary.inconclusive; break;
+      case Verdict::hypothesis_violation: ++summary.hypothesis_violations; break;
+      case Verdict::failure:
+        if (++summary.failures <= max_counterexamples)
+          summary.counterexamples.push_back(
+              shrink(algorithm, *theorem, row[Column::input], run, run.output / "counterexamples" / row[Column::job]));
+        break;
+    }
+  }
+  return summary;
+}
+
+}  // namespace curvebench::bench

@@ -1,0 +1,95 @@
+// The certifier: the verdicts of certify/theorems.h, a real theorem that holds (NN-Crust
+// below 1/3), and a deliberately broken algorithm that must be caught and shrunk to a
+// small counterexample.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "algorithms/nn_crust.h"
+#include "algorithms/registry.h"
+#include "bench/runner/certification.h"
+#include "bench/runner/results_table.h"
+#include "certify/theorems.h"
+#include "geometry/edge_io.h"
+#include "geometry/point_io.h"
+#include "tests/geometry/temporary_directory.h"
+
+namespace curvebench::bench {
+namespace {
+
+using certify::Verdict;
+
+TEST(Theorems, ComeFromTheRegistryWithTheirBounds) {
+  const std::vector<certify::Theorem> all = certify::theorems();
+  ASSERT_FALSE(all.empty());
+  for (const certify::Theorem& t : all) EXPECT_EQ(t.epsilon_below, *t.algorithm->condition.epsilon_below);
+  const auto nn = certify::theorem_of(*algorithms::find_algorithm("nn-crust"));
+  ASSERT_TRUE(nn);
+  EXPECT_EQ(nn->epsilon_below, 1.0 / 3);
+  EXPECT_FALSE(certify::theorem_of(*algorithms::find_algorithm("emst")));  // no epsilon bound
+}
+
+TEST(Theorems, VerdictsSeparateTheHypothesisFromTheAlgorithm) {
+  const certify::Theorem t{algorithms::find_algorithm("nn-crust"), 0.3};
+  EXPECT_EQ(certify::classify(t, 0.2, true), Verdict::passed);
+  EXPECT_EQ(certify::classify(t, 0.2, false), Verdict::failure);
+  EXPECT_EQ(certify::classify(t, 0.2999, false), Verdict::inconclusive);  // within 1e-3 of the bound
+  EXPECT_EQ(certify::classify(t, 0.3, false), Verdict::hypothesis_violation);
+  EXPECT_EQ(certify::classify(t, INFINITY, true), Verdict::hypothesis_violation);
+}
+
+Certify_options small_run(const std::filesystem::path& output, std::size_t count) {
+  Certify_options options;
+  options.count = count;
+  options.below_bound = 0.9;
+  options.run.output = output;
+  options.run.jobs = 2;
+  options.run.progress = false;
+  return options;
+}
+
+TEST(Certify, NnCrustBelowOneThirdHasNoFailure) {
+  testing::TemporaryDirectory dir;
+  const Certify_summary s = certify_algorithm(*algorithms::find_algorithm("nn-crust"), small_run(dir.path(), 40));
+  EXPECT_EQ(s.cases, 40u);
+  EXPECT_EQ(s.failures, 0u);
+  EXPECT_EQ(s.hypothesis_violations, 0u);  // the safe sampler keeps the measured epsilon below
+  EXPECT_EQ(s.passed + s.inconclusive, 40u);
+  EXPECT_NEAR(s.requested_epsilon, 0.3, 1e-12);
+}
+
+// NN-Crust that drops its last edge whenever the number of points is odd: a bug the
+// certifier must find, and shrink to a circle with a handful of points.
+TEST(Certify, CatchesAndShrinksABrokenAlgorithm) {
+  algorithms::Algorithm broken = *algorithms::find_algorithm("nn-crust");
+  broken.name = "broken-nn-crust";
+  broken.reconstruct = [](std::span<const geometry::Point> points, const algorithms::Parameter_values&) {
+    std::vector<geometry::Edge> edges = algorithms::nn_crust_reconstruction(points);
+    if (points.size() % 2 == 1 && !edges.empty()) edges.pop_back();
+    return algorithms::Reconstruction{edges, {}};
+  };
+  testing::TemporaryDirectory dir;
+  const Certify_summary s = certify_algorithm(broken, small_run(dir.path(), 16));
+  EXPECT_GT(s.failures, 0u);
+  ASSERT_FALSE(s.counterexamples.empty());
+  for (const Counterexample& c : s.counterexamples) {
+    EXPECT_TRUE(c.input.starts_with("circle:")) << c.input;
+    EXPECT_LE(c.points, 12u) << c.input;
+    EXPECT_EQ(c.points % 2, 1u);
+    EXPECT_LT(c.epsilon, 1.0 / 3);
+    // Self-contained: the points and ground truth on disk, the failing run's row and
+    // picture, and the replay script.
+    const auto points = geometry::read_point_file(c.directory / "points.xy").points;
+    EXPECT_EQ(points.size(), c.points);
+    EXPECT_EQ(geometry::read_edges(c.directory / "truth.edges").size(), c.points);  // a closed chain
+    const std::vector<Result_row> rows = read_results_csv(c.directory / "results.csv");
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0][Column::exact], "0");
+    EXPECT_TRUE(std::filesystem::exists(c.directory / rows[0][Column::picture]));
+    EXPECT_TRUE(std::filesystem::exists(c.directory / "replay.sh"));
+  }
+}
+
+}  // namespace
+}  // namespace curvebench::bench
