@@ -34,8 +34,8 @@ Nearest_segment_index::Nearest_segment_index(std::span<const Point> points, std:
     total_length += std::hypot(b.x() - a.x(), b.y() - a.y());
   }
   const double m = static_cast<double>(segments_.size()), width = xmax - xmin, height = ymax - ymin;
-  if (!std::isfinite(width) || !std::isfinite(height) || !std::isfinite(total_length))
-    throw std::invalid_argument("segments too far apart for distances in double (their extent overflows)");
+  if (!std::isfinite(width * width + height * height) || !std::isfinite(total_length))
+    throw std::invalid_argument("segments too far apart for distances in double (their squared extent overflows)");
   // About one cell per segment, and cells no smaller than the mean segment, so that the
   // pieces listed stay O(number of segments) even when many segments are long. At most
   // 2m + 1 cells a side: the last column and row take whatever lies beyond.

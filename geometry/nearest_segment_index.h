@@ -22,7 +22,8 @@ namespace curvebench::geometry {
 class Nearest_segment_index {
  public:
   // Edges index `points`; an edge whose ends coincide counts as a point. Throws
-  // std::invalid_argument if the segments' extent or total length overflows a double.
+  // std::invalid_argument if the segments' squared extent or total length overflows a
+  // double. A query farther than that gets an infinite squared distance.
   Nearest_segment_index(std::span<const Point> points, std::span<const Edge> edges);
 
   struct Nearest {
