@@ -31,7 +31,8 @@ struct Curve_distance {
   double rms = 0;
 };
 
-// 0 and 0 if neither curve has an edge; +infinity for both if only one has none.
+// 0 and 0 if neither curve has an edge; +infinity for both if only one has none. Throws
+// std::invalid_argument if the two curves' squared extent overflows a double.
 // `spacing` > 0 (a length); the default used by the benchmark is 1e-3 of the bounding-box
 // diagonal of `original` (default_distance_spacing).
 Curve_distance curve_distance(const Polyline_view& original, const Polyline_view& reconstruction, double spacing);
