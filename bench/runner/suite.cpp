@@ -10,37 +10,42 @@ namespace curvebench::bench {
 namespace {
 
 // Closed smooth curves with their own ground truth (SVG Béziers and random Fourier
-// curves): the survey's bunny and classic manifold curves, which we cannot redistribute
-// with their ground truth, stand-ins of the same kind. Two templates per {}: a level.
-#define CLOSED_CURVES(settings)                                                                       \
-  "svg:data/svg/simple.svg|" settings, "svg:data/svg/blob2.svg|" settings, "svg:data/svg/complex.svg|" settings, \
-      "fourier:seed=1|" settings, "fourier:seed=2|" settings, "fourier:seed=3|" settings
+// curves): stand-ins for the survey's bunny and classic manifold curves, whose ground
+// truth we cannot redistribute.
+const std::vector<std::string_view> closed_curves{"svg:data/svg/simple.svg", "svg:data/svg/blob2.svg",
+                                                  "svg:data/svg/complex.svg", "fourier:seed=1",
+                                                  "fourier:seed=2", "fourier:seed=3"};
 
 const std::vector<Suite>& table() {
   static const std::vector<Suite> all{
       {.name = "sampling",
        .description = "Sampling density: smooth closed curves, safe epsilon-sampling (survey: Sampling Density)",
-       .inputs = {CLOSED_CURVES("epsilon={}")},
+       .inputs = closed_curves,
+       .settings = "|epsilon={}",
        .variable = "epsilon",
        .levels = {"0.25", "0.5", "0.75"}},
       {.name = "noisy",
        .description = "Uniform noise of extent delta x bounding-box diagonal at epsilon 0.3 (survey: Uniform Noise)",
-       .inputs = {CLOSED_CURVES("epsilon=0.3|noise={}|seed=1")},
+       .inputs = closed_curves,
+       .settings = "|epsilon=0.3|noise={}|seed=1",
        .variable = "delta",
        .levels = {"0", "0.003", "0.01", "0.03"}},
       {.name = "lfsnoise",
        .description = "Noise along the normal of delta x lfs at epsilon 0.3 (survey: LFS-based Noise)",
-       .inputs = {CLOSED_CURVES("epsilon=0.3|lfs-noise={}|seed=1")},
+       .inputs = closed_curves,
+       .settings = "|epsilon=0.3|lfs-noise={}|seed=1",
        .variable = "delta",
        .levels = {"0", "0.1", "0.33", "0.5"}},
       {.name = "sampling-noise",
        .description = "Varying sampling density with lfs noise delta = 1/3 (survey: Varying Sampling Density + LFS Noise)",
-       .inputs = {CLOSED_CURVES("epsilon={}|lfs-noise=0.33|seed=1")},
+       .inputs = closed_curves,
+       .settings = "|epsilon={}|lfs-noise=0.33|seed=1",
        .variable = "epsilon",
        .levels = {"0.1", "0.2", "0.4"}},
       {.name = "outliers",
        .description = "Outliers uniform in the bounding box, percent of the samples, at epsilon 0.3 (survey: Outliers)",
-       .inputs = {CLOSED_CURVES("epsilon=0.3|outliers={}|seed=1")},
+       .inputs = closed_curves,
+       .settings = "|epsilon=0.3|outliers={}|seed=1",
        .variable = "percent",
        .levels = {"0", "5", "10", "20"}},
       {.name = "manifold",
@@ -51,7 +56,9 @@ const std::vector<Suite>& table() {
                   "file:data/stretchdenoise/Cup0.txt", "file:data/stretchdenoise/Keyboard0.txt",
                   "file:data/stretchdenoise/Mouse0.txt", "file:data/stretchdenoise/thing.txt",
                   "file:data/stretchdenoise/vase.txt", "file:data/stretchdenoise/drill.txt",
-                  CLOSED_CURVES("epsilon=0.4")}},
+                  "svg:data/svg/simple.svg|epsilon=0.4", "svg:data/svg/blob2.svg|epsilon=0.4",
+                  "svg:data/svg/complex.svg|epsilon=0.4", "fourier:seed=1|epsilon=0.4", "fourier:seed=2|epsilon=0.4",
+                  "fourier:seed=3|epsilon=0.4"}},
       {.name = "sharp-corners",
        .description = "The survey's sharp-corner family: a unit circle opening to a corner of the given angle, "
                       "10, 16 and 20 points per circle, a sample at the corner (survey: Sharp Corners)",
@@ -126,8 +133,6 @@ const std::vector<Suite>& table() {
   return all;
 }
 
-#undef CLOSED_CURVES
-
 std::string substituted(std::string_view text, std::string_view value) {
   std::string result(text);
   for (std::size_t at; (at = result.find("{}")) != std::string::npos;) result.replace(at, 2, value);
@@ -153,7 +158,7 @@ std::vector<Suite_case> suite_cases(const Suite& suite) {
   const std::vector<std::string_view> one_level{""};
   for (const std::string_view input : suite.inputs)
     for (const std::string_view level : suite.variable.empty() ? one_level : suite.levels) {
-      const std::string name = substituted(input, level);
+      const std::string name = substituted(std::string(input) + std::string(suite.settings), level);
       const std::string label = suite.variable.empty() ? "" : std::string(suite.variable) + "=" + std::string(level);
       const std::string_view source = input_source(name);
       for (const std::string& spec : geometry::expand_curve_specs(source))

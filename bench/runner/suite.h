@@ -1,8 +1,9 @@
 // The experiments of the benchmark as data (survey, "Benchmark Driver and Test Scripts":
 // one test script per experiment, `run-sampling.sh` ...; "Evaluation & Results"). A suite
 // names its inputs as templates over one experiment variable: each level of the variable
-// substitutes `{}` in every template, giving input names (bench_input.h) that every
-// registered algorithm runs on. A composite suite (`default`, `all`) runs other suites.
+// substitutes `{}` in every template (followed by the suite's settings), giving input
+// names (bench_input.h) that every registered algorithm runs on. A composite suite
+// (`default`, `all`) runs other suites.
 #pragma once
 
 #include <span>
@@ -17,6 +18,7 @@ struct Suite {
   std::string_view description;               // what it measures, and the survey's section
   // The "= {}" let the table below leave out what a suite does not use, under -Wextra.
   std::vector<std::string_view> inputs = {};  // input-name templates; a source glyph:* stands for every glyph
+  std::string_view settings = {};             // appended to every template: "|epsilon={}|lfs-noise=0.1"
   std::string_view variable = {};             // the experiment variable, e.g. "epsilon"; empty: one level
   std::vector<std::string_view> levels = {};  // its values, substituted for {}
   std::vector<std::string_view> parts = {};   // a composite suite: the suites it runs, nothing else
