@@ -1,22 +1,21 @@
 #include "geometry/curve_topology.h"
 
 #include <algorithm>
-#include <numeric>
 #include <vector>
+
+#include <boost/pending/disjoint_sets.hpp>
 
 namespace curvebench::geometry {
 
 Curve_topology curve_topology(std::size_t point_count, std::span<const Edge> edges) {
-  std::vector<std::size_t> degree(point_count, 0), parent(point_count);
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
-  const auto root = [&](std::size_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  std::vector<std::size_t> degree(point_count, 0), rank(point_count), parent(point_count);
+  boost::disjoint_sets<std::size_t*, std::size_t*> components(rank.data(), parent.data());
+  for (std::size_t v = 0; v < point_count; ++v) components.make_set(v);
   for (const auto& [i, j] : edges) {
     ++degree[i], ++degree[j];
-    parent[root(i)] = root(j);
+    components.union_set(i, j);
   }
+  const auto root = [&](std::size_t v) { return components.find_set(v); };
   // Per component (by root): vertices, edges, vertices of degree 1 and of degree > 2.
   struct Tally {
     std::size_t vertices = 0, edges = 0, ends = 0, branches = 0;

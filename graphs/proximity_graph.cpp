@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include "graphs/alpha_shape_boundary.h"
 #include "graphs/beta_skeleton.h"
 #include "graphs/delaunay_graph.h"
@@ -64,19 +66,16 @@ double connecting_alpha(const Delaunay_triangulation& dt) {
     by_length.emplace_back(CGAL::squared_distance(dt.point(e.source), dt.point(e.target)), k);
   }
   std::sort(by_length.begin(), by_length.end());
-  std::vector<Vertex> parent(dt.size());
-  for (Vertex v = 0; v < parent.size(); ++v) parent[v] = v;
-  const auto root = [&](Vertex v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  std::vector<std::size_t> rank(dt.size()), parent(dt.size());
+  boost::disjoint_sets<std::size_t*, std::size_t*> components(rank.data(), parent.data());
+  for (std::size_t v = 0; v < dt.size(); ++v) components.make_set(v);
   double longest = 0;
   std::size_t joined = 0;
   for (const auto& [length, k] : by_length) {
     if (joined + 1 >= dt.size()) break;
-    const Vertex a = root(dt.edges()[k].source), b = root(dt.edges()[k].target);
+    const auto a = components.find_set(dt.edges()[k].source), b = components.find_set(dt.edges()[k].target);
     if (a == b) continue;
-    parent[a] = b, ++joined, longest = length;
+    components.link(a, b), ++joined, longest = length;
   }
   // The weight is a rounded squared length: step up a few ulps so the edge is surely in.
   double alpha = longest / 4;

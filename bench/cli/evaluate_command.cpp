@@ -40,9 +40,8 @@ void run_evaluate(const Evaluate_options& o) {
   std::optional<bench::Polyline> curve;
   if (!o.curve.empty()) curve = bench::dense_polyline(geometry::Local_feature_size(geometry::make_curve(o.curve)));
   const geometry::Polyline_view truth_view{points, truth};
-  const geometry::Polyline_view curve_view{curve ? std::span<const geometry::Point>(curve->points) : std::span<const geometry::Point>(),
-                                           curve ? std::span<const geometry::Edge>(curve->edges) : std::span<const geometry::Edge>()};
-  const bench::Evaluation e = bench::evaluate({points, edges}, true, &truth_view, curve ? &curve_view : nullptr);
+  const std::optional<geometry::Polyline_view> curve_view = curve ? std::optional(curve->view()) : std::nullopt;
+  const bench::Evaluation e = bench::evaluate({points, edges}, true, &truth_view, curve_view ? &*curve_view : nullptr);
   const nlohmann::json report = {
       {"points", points.size()},
       {"edges", edges.size()},

@@ -30,6 +30,7 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/curve_distance.h"
 #include "geometry/edge.h"
 #include "geometry/kernel.h"
 #include "geometry/local_feature_size.h"
@@ -44,6 +45,7 @@ using geometry::Point;
 struct Polyline {
   std::vector<Point> points;
   std::vector<Edge> edges;
+  geometry::Polyline_view view() const { return {points, edges}; }
 };
 
 struct Bench_input {

@@ -120,10 +120,10 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
     const std::span<const Point> points = on_input_points ? std::span<const Point>(input.points) : result.points;
     const geometry::Polyline_view reconstruction{points, result.edges};
     const geometry::Polyline_view truth{input.points, input.truth ? std::span<const Edge>(*input.truth) : std::span<const Edge>()};
-    const geometry::Polyline_view curve{input.curve ? std::span<const Point>(input.curve->points) : std::span<const Point>(),
-                                        input.curve ? std::span<const Edge>(input.curve->edges) : std::span<const Edge>()};
+    const std::optional<geometry::Polyline_view> curve =
+        input.curve ? std::optional(input.curve->view()) : std::nullopt;
     const Evaluation evaluation =
-        evaluate(reconstruction, on_input_points, input.truth ? &truth : nullptr, input.curve ? &curve : nullptr);
+        evaluate(reconstruction, on_input_points, input.truth ? &truth : nullptr, curve ? &*curve : nullptr);
 
     row[Column::status] = "ok";
     row[Column::runtime_ms] = format_number(elapsed.count());
