@@ -11,6 +11,7 @@
 //           at which the alpha-shape connects.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
@@ -131,6 +132,12 @@ void check_proximity_graph_laws(const Delaunay_triangulation& dt, const Paramete
   const Edges nearest_neighbor = laws.build("knn", with_k(parameters, 1));
   laws.require(subset(nearest_neighbor, emst), "the nearest-neighbour graph is a subgraph of the EMST");
   laws.require(subset(nearest_neighbor, table_graph("sig")), "the nearest-neighbour graph is a subgraph of the SIG");
+  const Edges& sigdt = table_graph("sigdt");
+  Edges sig_within_delaunay;
+  std::set_intersection(table_graph("sig").begin(), table_graph("sig").end(), delaunay.begin(), delaunay.end(),
+                        std::back_inserter(sig_within_delaunay));
+  laws.require(sigdt == sig_within_delaunay, "SIGDT is the SIG's part of the Delaunay triangulation");
+  laws.require(subset(nearest_neighbor, sigdt), "the nearest-neighbour graph is a subgraph of SIGDT");
   laws.require(parameters.k == 0 || subset(nearest_neighbor, table_graph("knn")), "the k-NN graphs grow with k");
 }
 

@@ -13,6 +13,7 @@
 #include "graphs/gabriel_graph.h"
 #include "graphs/k_nearest_neighbor_graph.h"
 #include "graphs/relative_neighborhood_graph.h"
+#include "graphs/sphere_of_influence_delaunay_graph.h"
 #include "graphs/sphere_of_influence_graph.h"
 
 namespace curvebench::graphs {
@@ -37,6 +38,8 @@ constexpr Proximity_graph table[] = {
      }},
     {"sig", "sphere-of-influence graph",
      [](const Delaunay_triangulation& dt, const Parameters&) { return sphere_of_influence_graph(dt); }},
+    {"sigdt", "sphere-of-influence graph within the Delaunay triangulation (SIGDT)",
+     [](const Delaunay_triangulation& dt, const Parameters&) { return sphere_of_influence_delaunay_graph(dt); }},
     {"knn", "k-nearest-neighbour graph (--k)",
      [](const Delaunay_triangulation& dt, const Parameters& p) { return k_nearest_neighbor_graph(dt, p.k); }},
     {"alpha", "alpha-shape boundary (--alpha, squared radius)",

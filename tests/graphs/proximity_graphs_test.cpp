@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numeric>
 
@@ -17,6 +18,7 @@
 #include "graphs/k_nearest_neighbor_graph.h"
 #include "graphs/proximity_graph.h"
 #include "graphs/relative_neighborhood_graph.h"
+#include "graphs/sphere_of_influence_delaunay_graph.h"
 #include "graphs/sphere_of_influence_graph.h"
 #include "tests/support/brute_force_graphs.h"
 #include "tests/support/point_generators.h"
@@ -144,6 +146,34 @@ RC_GTEST_PROP(ProximityGraphs, ContainmentChainAndBetaIdentities, ()) {
 RC_GTEST_PROP(SphereOfInfluenceGraph, EqualsBruteForce, ()) {
   const auto points = *point_sets(16);
   RC_ASSERT(edges_of(sphere_of_influence_graph(points)) == testing::brute_force_sphere_of_influence_graph(points));
+}
+
+Edges intersection(const Edges& a, const Edges& b) {
+  Edges both;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+  return both;
+}
+
+// SIGDT against the brute-force SIG and the empty-circle definition of Delaunay edges:
+// cocircular points leave some edges to the triangulation's choice, so the exact
+// statement is strong Delaunay edges within SIG <= SIGDT <= weak Delaunay edges within
+// SIG, and SIGDT is the SIG's part of the triangulation actually built.
+RC_GTEST_PROP(SphereOfInfluenceDelaunayGraph, IsTheBruteForceSigWithinTheTriangulation, ()) {
+  const auto points = *point_sets(16);
+  const Delaunay_triangulation dt(points);
+  const Edges sigdt = edges_of(sphere_of_influence_delaunay_graph(dt));
+  const Edges sig = testing::brute_force_sphere_of_influence_graph(points);
+  RC_ASSERT(sigdt == intersection(sig, edges_of(delaunay_graph(dt))));
+  RC_ASSERT(subset(intersection(sig, testing::strong_delaunay_edges(points)), sigdt));
+  RC_ASSERT(subset(sigdt, intersection(sig, testing::weak_delaunay_edges(points))));
+}
+
+// Two tight pairs far apart on a line: the triangulation is the chain, and SIG keeps
+// each pair's edge (0.1 <= 0.2) but not the gap between them (2.9 > 0.1 + 0.1).
+TEST(SphereOfInfluenceDelaunayGraph, DropsTheGapBetweenTwoPairs) {
+  const std::vector<Point> points{{0, 0}, {0.1, 0}, {3, 0}, {3.1, 0}};
+  EXPECT_EQ(edges_of(delaunay_graph(points)), (Edges{{0, 1}, {1, 2}, {2, 3}}));
+  EXPECT_EQ(edges_of(sphere_of_influence_delaunay_graph(points)), (Edges{{0, 1}, {2, 3}}));
 }
 
 RC_GTEST_PROP(KNearestNeighborGraph, EqualsBruteForce, ()) {
