@@ -6,6 +6,7 @@
 #include "algorithms/alpha_shape.h"
 #include "algorithms/beta_skeleton.h"
 #include "algorithms/conservative_crust.h"
+#include "algorithms/crawl.h"
 #include "algorithms/crust.h"
 #include "algorithms/emst.h"
 #include "algorithms/gathan.h"
@@ -21,6 +22,7 @@ std::span<const Algorithm> registry() {
       alpha_shape_algorithm(),
       beta_skeleton_algorithm(),
       emst_algorithm(),
+      crawl_algorithm(),
       crust_algorithm(),
       nn_crust_algorithm(),
       conservative_crust_algorithm(),
