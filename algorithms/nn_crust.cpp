@@ -14,6 +14,7 @@
 #include <CGAL/spatial_sort.h>
 
 #include "geometry/exact_sign.h"
+#include "graphs/delaunay_triangulation.h"
 #include "graphs/proximity_predicates.h"
 
 namespace curvebench::algorithms {
@@ -368,6 +369,9 @@ void collinear_neighbors(std::span<const Point> points, std::vector<Nearest_and_
   std::iota(order.begin(), order.end(), Index{0});
   // Lexicographic order is the order along the line, whatever its direction.
   std::sort(order.begin(), order.end(), [&](Index a, Index b) { return points[a] < points[b]; });
+  if (std::adjacent_find(order.begin(), order.end(), [&](Index a, Index b) { return points[a] == points[b]; }) !=
+      order.end())
+    throw std::invalid_argument("nearest and half neighbours: two points are equal; merge duplicates first");
   for (std::size_t k = 0; k < order.size(); ++k) {
     const Index p = order[k];
     const Index before = k > 0 ? order[k - 1] : no_neighbor, after = k + 1 < order.size() ? order[k + 1] : no_neighbor;
@@ -390,6 +394,10 @@ std::vector<Nearest_and_half_neighbor> nearest_and_half_neighbors(std::span<cons
       throw std::invalid_argument("nearest and half neighbours: a coordinate is not finite");
   std::vector<Nearest_and_half_neighbor> result(points.size());
   if (points.size() < 2) return result;
+  if (graphs::all_collinear(points)) {
+    collinear_neighbors(points, result);
+    return result;
+  }
 
   // Hilbert-sort the (point, index) pairs themselves and insert each with the previous
   // vertex as hint: CGAL's range insertion, minus the indirection through an index array.
@@ -408,11 +416,7 @@ std::vector<Nearest_and_half_neighbor> nearest_and_half_neighbors(std::span<cons
   if (dt.number_of_vertices() != points.size())
     throw std::invalid_argument("nearest and half neighbours: two points are equal; merge duplicates first");
 
-  if (dt.dimension() < 2) {
-    collinear_neighbors(points, result);
-  } else {
-    Neighbor_search(dt, indexed, half_plane, result).run();
-  }
+  Neighbor_search(dt, indexed, half_plane, result).run();
   return result;
 }
 

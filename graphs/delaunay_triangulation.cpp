@@ -37,6 +37,15 @@ using Cgal_delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 
 }  // namespace
 
+bool all_collinear(std::span<const Point> points) {
+  if (points.empty()) return true;
+  const auto second = std::find_if(points.begin(), points.end(), [&](const Point& p) { return p != points.front(); });
+  if (second == points.end()) return true;
+  return std::all_of(points.begin(), points.end(), [&](const Point& p) {
+    return CGAL::orientation(points.front(), *second, p) == CGAL::COLLINEAR;
+  });
+}
+
 Delaunay_triangulation::Delaunay_triangulation(std::span<const Point> points) : points_(points) {
   if (points.size() >= no_vertex) throw std::invalid_argument("Delaunay triangulation: too many points");
   for (const Point& p : points)
@@ -47,6 +56,7 @@ Delaunay_triangulation::Delaunay_triangulation(std::span<const Point> points) : 
 }
 
 void Delaunay_triangulation::triangulate() {
+  if (all_collinear(points_)) return connect_collinear();  // a sort; CGAL's insertion is quadratic there
   std::vector<std::pair<Point, Vertex>> indexed;
   indexed.reserve(points_.size());
   for (Vertex i = 0; i < points_.size(); ++i) indexed.emplace_back(points_[i], i);
@@ -64,7 +74,6 @@ void Delaunay_triangulation::triangulate() {
     hint = v->face();
   }
   if (dt.number_of_vertices() != points_.size()) throw_duplicate(points_);
-  if (dt.dimension() < 2) return connect_collinear();
 
   edges_.reserve(3 * points_.size());
   // Faces list their vertices counterclockwise, so an interior edge appears as (a, b) in
@@ -93,6 +102,9 @@ void Delaunay_triangulation::connect_collinear() {
   std::vector<Vertex> order(points_.size());
   std::iota(order.begin(), order.end(), Vertex{0});
   std::sort(order.begin(), order.end(), [&](Vertex a, Vertex b) { return points_[a] < points_[b]; });
+  if (std::adjacent_find(order.begin(), order.end(), [&](Vertex a, Vertex b) { return points_[a] == points_[b]; }) !=
+      order.end())
+    throw_duplicate(points_);
   for (std::size_t k = 1; k < order.size(); ++k)
     edges_.push_back({std::min(order[k - 1], order[k]), std::max(order[k - 1], order[k]), no_vertex, no_vertex});
 }

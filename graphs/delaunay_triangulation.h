@@ -26,6 +26,11 @@ struct Delaunay_edge {
   Vertex left, right;     // apex of the triangle left / right of source -> target, or no_vertex
 };
 
+// Whether all points lie on one line (exact; equal points count as collinear). CGAL
+// inserts collinear points one by one into a chain it walks, quadratically (10^5 of them
+// took 15 s), so triangulations check first and sort instead.
+bool all_collinear(std::span<const Point> points);
+
 class Delaunay_triangulation {
  public:
   // Throws std::invalid_argument if two points are equal (merge them first, see
