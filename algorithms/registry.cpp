@@ -13,6 +13,7 @@
 #include "algorithms/gathang.h"
 #include "algorithms/hnn_crust.h"
 #include "algorithms/nn_crust.h"
+#include "algorithms/peel.h"
 #include "geometry/point_set.h"
 
 namespace curvebench::algorithms {
@@ -29,6 +30,7 @@ std::span<const Algorithm> registry() {
       hnn_crust_algorithm(),
       gathan_algorithm(),
       gathang_algorithm(),
+      peel_algorithm(),
   };
   return algorithms;
 }
