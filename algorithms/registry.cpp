@@ -14,6 +14,7 @@
 #include "algorithms/hnn_crust.h"
 #include "algorithms/nn_crust.h"
 #include "algorithms/peel.h"
+#include "algorithms/shape_hull.h"
 #include "geometry/point_set.h"
 
 namespace curvebench::algorithms {
@@ -23,6 +24,7 @@ std::span<const Algorithm> registry() {
       alpha_shape_algorithm(),
       beta_skeleton_algorithm(),
       emst_algorithm(),
+      shape_hull_algorithm(),
       crawl_algorithm(),
       crust_algorithm(),
       nn_crust_algorithm(),
