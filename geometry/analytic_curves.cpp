@@ -256,13 +256,19 @@ Curve superellipse(double a, double b, double n) {
   return curve;
 }
 
-Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& parameters) {
+namespace {
+
+std::string fourier_name(std::uint64_t seed, const Fourier_curve_parameters& parameters) {
+  return "fourier:seed=" + std::to_string(seed) + ",harmonics=" + std::to_string(parameters.harmonics) +
+         ",amplitude=" + format_number(parameters.amplitude) + ",decay=" + format_number(parameters.decay);
+}
+
+// The harmonics of random_fourier_curve(seed, parameters).
+std::vector<Fourier_piece::Harmonic> simple_fourier_terms(std::uint64_t seed, const Fourier_curve_parameters& parameters) {
   const auto& [harmonics, amplitude, decay] = parameters;
   if (harmonics < 0 || harmonics > 64) throw std::invalid_argument("fourier: harmonics must be in [0, 64]");
   if (!(amplitude >= 0) || !std::isfinite(amplitude) || !(decay >= 0) || !std::isfinite(decay))
     throw std::invalid_argument("fourier: amplitude and decay must be finite and non-negative");
-  const std::string name = "fourier:seed=" + std::to_string(seed) + ",harmonics=" + std::to_string(harmonics) +
-                           ",amplitude=" + format_number(amplitude) + ",decay=" + format_number(decay);
   for (std::uint64_t attempt = 0; attempt < 1000; ++attempt) {
     std::mt19937_64 engine(derived_seed(seed, attempt));
     std::vector<Fourier_piece::Harmonic> terms{{1, Vector(1, 0), Vector(0, 1)}};
@@ -272,13 +278,38 @@ Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& p
       const double bx = symmetric_unit(engine), by = symmetric_unit(engine);
       terms.push_back({k, scale * Vector(ax, ay), scale * Vector(bx, by)});
     }
-    Curve curve = single_piece_curve(name, std::make_shared<Fourier_piece>(std::move(terms)));
+    const Curve curve = single_piece_curve("", std::make_shared<Fourier_piece>(terms));
     const auto& component = curve.components.front();
     std::vector<Point> polyline;
     for (int i = 0; i < simplicity_samples; ++i) polyline.push_back(component.point(double(i) / simplicity_samples));
-    if (turns_once(component) && closed_polyline_is_simple(polyline)) return curve;
+    if (turns_once(component) && closed_polyline_is_simple(polyline)) return terms;
   }
   throw std::invalid_argument("fourier: no simple regular curve in 1000 attempts; lower the amplitude");
+}
+
+}  // namespace
+
+Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& parameters) {
+  return single_piece_curve(fourier_name(seed, parameters),
+                            std::make_shared<Fourier_piece>(simple_fourier_terms(seed, parameters)));
+}
+
+Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components) {
+  if (components < 1 || components > 64) throw std::invalid_argument("fourier: components must be in [1, 64]");
+  if (components == 1) return random_fourier_curve(seed, parameters);
+  Curve curve{fourier_name(seed, parameters) + ",components=" + std::to_string(components), {}};
+  double x = 0;
+  for (int c = 0; c < components; ++c) {
+    auto terms = simple_fourier_terms(seed + c, parameters);
+    const Kernel::Iso_rectangle_2 box =
+        single_piece_curve("", std::make_shared<Fourier_piece>(terms)).bounding_box(1e-6);
+    // A constant term (k = 0) moves the curve: its derivatives vanish.
+    terms.push_back({0, Vector(x - box.xmin(), 0), Vector(0, 0)});
+    x += box.xmax() - box.xmin() + component_gap;
+    curve.components.emplace_back(
+        std::vector<std::shared_ptr<const Curve_piece>>{std::make_shared<Fourier_piece>(std::move(terms))}, true);
+  }
+  return curve;
 }
 
 }  // namespace curvebench::geometry

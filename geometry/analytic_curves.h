@@ -46,4 +46,12 @@ struct Fourier_curve_parameters {
 // attempts all fail (amplitude far too large).
 Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& parameters = {});
 
+// Several components for multi-curve experiments: random_fourier_curve(seed + c, parameters)
+// for c = 0 .. components - 1, in a row along x, component_gap apart beyond their bounding
+// boxes (wide against every component's features, so each keeps its own lfs near it).
+// One component is random_fourier_curve itself; otherwise the name ends in
+// ",components=K". Throws std::invalid_argument for components outside [1, 64].
+inline constexpr double component_gap = 1.5;
+Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components);
+
 }  // namespace curvebench::geometry

@@ -111,11 +111,12 @@ Curve make_curve(std::string_view spec) {
     return superellipse(p.get("a", 1.0), p.get("b", 1.0), p.get("n", 4.0));
   }
   if (kind == "fourier") {
-    const Parameters p(kind, rest, {"seed", "harmonics", "amplitude", "decay"});
+    const Parameters p(kind, rest, {"seed", "harmonics", "amplitude", "decay", "components"});
     const Fourier_curve_parameters defaults;
-    return random_fourier_curve(p.get<std::uint64_t>("seed", 0), {p.get("harmonics", defaults.harmonics),
-                                                                  p.get("amplitude", defaults.amplitude),
-                                                                  p.get("decay", defaults.decay)});
+    return random_fourier_curves(p.get<std::uint64_t>("seed", 0),
+                                 {p.get("harmonics", defaults.harmonics), p.get("amplitude", defaults.amplitude),
+                                  p.get("decay", defaults.decay)},
+                                 p.get("components", 1));
   }
   if (kind == "corner") return sharp_corner_curve(Parameters(kind, rest, {"angle"}).get("angle", 30.0));
   if (kind == "svg") {

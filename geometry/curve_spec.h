@@ -5,7 +5,8 @@
 //   circle[:r=R]                                   default r=1
 //   ellipse[:a=A,b=B]                              default a=2,b=1
 //   superellipse[:a=A,b=B,n=N]                     default a=1,b=1,n=4
-//   fourier[:seed=S,harmonics=H,amplitude=A,decay=D]  default seed=0, the rest as in
+//   fourier[:seed=S,harmonics=H,amplitude=A,decay=D,components=K]  default seed=0,
+//                                                  components=1, the rest as in
 //                                                  Fourier_curve_parameters
 //   corner[:angle=DEGREES]                         default angle=30
 //   svg:FILE                                       every path of an SVG file

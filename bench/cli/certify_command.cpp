@@ -72,7 +72,7 @@ void add_certify_command(CLI::App& app) {
       "certify", "Check an algorithm's sampling-condition theorem on generated curves, shrinking counterexamples");
   command->add_option("-a,--algorithm", o->algorithm, "Algorithm with a proven epsilon bound (see `curvebench list`)")
       ->required();
-  command->add_option("--curves", o->certify.curves, "fourier (random smooth closed curves), svg or glyphs")
+  command->add_option("--curves", o->certify.curves, "fourier (random smooth closed curves), multi (2 or 3 of them side by side), svg or glyphs")
       ->check(CLI::IsMember({"fourier", "svg", "glyphs"}))
       ->capture_default_str();
   command->add_option("--count", o->certify.count, "Number of cases")->capture_default_str();

@@ -1,7 +1,9 @@
 #include "bench/runner/certification.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include "bench/runner/bench_input.h"
@@ -19,8 +21,9 @@ using certify::Verdict;
 constexpr std::string_view suite_name = "certify";
 constexpr std::size_t max_counterexamples = 5;  // shrinking costs a few runs each
 
-std::string fourier_source(std::uint64_t seed, int harmonics) {
-  return "fourier:seed=" + std::to_string(seed) + ",harmonics=" + std::to_string(harmonics);
+std::string fourier_source(std::uint64_t seed, int harmonics, int components = 1) {
+  return "fourier:seed=" + std::to_string(seed) + ",harmonics=" + std::to_string(harmonics) +
+         (components > 1 ? ",components=" + std::to_string(components) : "");
 }
 
 // The verdict of one finished row.
@@ -40,17 +43,33 @@ Result_row run_one(const algorithms::Algorithm& algorithm, const std::string& in
   return read_results_csv(directory / "results.csv").at(0);
 }
 
-// Simpler inputs than `input`, simplest first: a circle at the same epsilon, the same
-// curve with one harmonic fewer, then a coarser sampling (fewer points) half-way to the
-// bound.
+// The integer value of `key` in a `kind:key=value,...` source, if it has one.
+std::optional<int> value_of(const std::string& source, const std::string& key) {
+  const auto at = source.find("," + key + "=");
+  if (at == std::string::npos) return std::nullopt;
+  return std::stoi(source.substr(at + key.size() + 2));
+}
+
+// `source` with `key`'s value replaced, or the key dropped if `value` is empty.
+std::string with_value(const std::string& source, const std::string& key, std::optional<int> value) {
+  const auto at = source.find("," + key + "=");
+  const auto end = std::min(source.find(',', at + 1), source.size());
+  return source.substr(0, at) + (value ? "," + key + "=" + std::to_string(*value) : "") + source.substr(end);
+}
+
+// Simpler inputs than `input`, simplest first: a circle at the same epsilon, one
+// component fewer, one harmonic fewer, then a coarser sampling (fewer points) half-way to
+// the bound.
 std::vector<std::string> simpler_inputs(const std::string& input, double epsilon, double bound) {
   const std::string source(input_source(input));
   std::vector<std::string> simpler;
   const auto at = [](const std::string& s, double e) { return s + "|epsilon=" + format_number(e); };
   if (!source.starts_with("circle:")) simpler.push_back(at("circle:r=1", epsilon));
-  if (const auto h = source.find(",harmonics="); source.starts_with("fourier:") && h != std::string::npos) {
-    const int harmonics = std::stoi(source.substr(h + 11));
-    if (harmonics > 0) simpler.push_back(at(source.substr(0, h) + ",harmonics=" + std::to_string(harmonics - 1), epsilon));
+  if (source.starts_with("fourier:")) {
+    if (const auto components = value_of(source, "components"); components && *components > 1)
+      simpler.push_back(at(with_value(source, "components", *components > 2 ? std::optional(*components - 1) : std::nullopt), epsilon));
+    if (const auto harmonics = value_of(source, "harmonics"); harmonics && *harmonics > 0)
+      simpler.push_back(at(with_value(source, "harmonics", *harmonics - 1), epsilon));
   }
   const double coarser = epsilon + (0.99 * bound - epsilon) / 2;
   if (coarser - epsilon > 1e-3 * bound) simpler.push_back(at(source, coarser));
@@ -102,6 +121,9 @@ std::vector<Suite_case> certification_cases(const Certify_options& options, doub
   if (options.curves == "fourier") {
     for (std::size_t i = 0; i < options.count; ++i)
       sources.push_back(fourier_source((options.seed << 32) + i, 1 + static_cast<int>(i % 8)));
+  } else if (options.curves == "multi") {
+    for (std::size_t i = 0; i < options.count; ++i)
+      sources.push_back(fourier_source((options.seed << 32) + 3 * i, 1 + static_cast<int>(i % 8), 2 + static_cast<int>(i % 2)));
   } else if (options.curves == "svg" || options.curves == "glyphs") {
     std::vector<std::string> all;
     if (options.curves == "glyphs") {
@@ -114,7 +136,7 @@ std::vector<Suite_case> certification_cases(const Certify_options& options, doub
     const std::size_t step = std::max<std::size_t>(1, all.size() / std::max<std::size_t>(options.count, 1));
     for (std::size_t i = 0; i < all.size() && sources.size() < options.count; i += step) sources.push_back(all[i]);
   } else {
-    throw std::invalid_argument("--curves must be fourier, svg or glyphs, not '" + options.curves + "'");
+    throw std::invalid_argument("--curves must be fourier, multi, svg or glyphs, not '" + options.curves + "'");
   }
   std::vector<Suite_case> cases;
   for (const std::string& source : sources)

@@ -8,7 +8,8 @@
 // hypothesis) and written as a self-contained counterexample.
 //
 // Every case is reproducible from (curves, index, seed): case i of `fourier` is the
-// input `fourier:seed=SEED*2^32+i,harmonics=1+i%8|epsilon=E`.
+// input `fourier:seed=SEED*2^32+i,harmonics=1+i%8|epsilon=E`, of `multi` the input
+// `fourier:seed=SEED*2^32+3i,harmonics=1+i%8,components=2+i%2|epsilon=E`.
 #pragma once
 
 #include <filesystem>
@@ -22,7 +23,7 @@
 namespace curvebench::bench {
 
 struct Certify_options {
-  std::string curves = "fourier";  // fourier (random smooth closed curves), svg (the bundled drawings), glyphs
+  std::string curves = "fourier";  // fourier (random smooth closed curves), multi (2 or 3 of them), svg (the bundled drawings), glyphs
   std::size_t count = 100;
   std::optional<double> epsilon;   // sample at this epsilon, else at below_bound x the bound
   double below_bound = 0.95;

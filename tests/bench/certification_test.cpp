@@ -3,6 +3,8 @@
 // small counterexample.
 #include <gtest/gtest.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <cmath>
 #include <fstream>
 
@@ -88,6 +90,37 @@ TEST(Certify, CatchesAndShrinksABrokenAlgorithm) {
     EXPECT_EQ(rows[0][Column::exact], "0");
     EXPECT_TRUE(std::filesystem::exists(c.directory / rows[0][Column::picture]));
     EXPECT_TRUE(std::filesystem::exists(c.directory / "replay.sh"));
+  }
+}
+
+// NN-Crust that drops an edge whenever its output has several components: on `multi`
+// curves it fails, and shrinking keeps two components (a circle, or one component, would
+// pass) while it simplifies each to its base ellipse-like curve (no harmonics).
+TEST(Certify, ShrinksAMultiComponentFailureToTwoComponents) {
+  algorithms::Algorithm broken = *algorithms::find_algorithm("nn-crust");
+  broken.name = "broken-on-several-curves";
+  broken.reconstruct = [](std::span<const geometry::Point> points, const algorithms::Parameter_values&) {
+    std::vector<geometry::Edge> edges = algorithms::nn_crust_reconstruction(points);
+    std::vector<std::size_t> rank(points.size()), parent(points.size());
+    boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
+    for (std::size_t v = 0; v < points.size(); ++v) sets.make_set(v);
+    std::size_t components = points.size();
+    for (const auto& [i, j] : edges)
+      if (sets.find_set(i) != sets.find_set(j)) sets.union_set(i, j), --components;
+    if (components > 1 && !edges.empty()) edges.pop_back();
+    return algorithms::Reconstruction{edges, {}};
+  };
+  testing::TemporaryDirectory dir;
+  Certify_options options = small_run(dir.path(), 4);
+  options.curves = "multi";
+  const Certify_summary s = certify_algorithm(broken, options);
+  EXPECT_EQ(s.cases, 4u);
+  EXPECT_EQ(s.failures, 4u);
+  ASSERT_FALSE(s.counterexamples.empty());
+  for (const Counterexample& c : s.counterexamples) {
+    EXPECT_NE(c.input.find(",harmonics=0,"), std::string::npos) << c.input;
+    EXPECT_NE(c.input.find(",components=2|"), std::string::npos) << c.input;
+    EXPECT_LT(c.epsilon, 1.0 / 3);
   }
 }
 

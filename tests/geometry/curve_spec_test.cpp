@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "geometry/analytic_curves.h"
 #include "geometry/glyph_curves.h"
 #include "geometry/parse_error.h"
 #include "tests/geometry/temporary_directory.h"
@@ -38,12 +41,39 @@ TEST(CurveSpec, MakesEveryKindWithDefaults) {
 }
 
 TEST(CurveSpec, NamesAreSpecsOfTheSameCurve) {
-  for (const char* spec : {"circle:r=0.1", "ellipse:a=3,b=0.25", "superellipse:a=1,b=2,n=0.5", "fourier:seed=3,amplitude=0.9",
+  for (const char* spec : {"circle:r=0.1", "ellipse:a=3,b=0.25", "superellipse:a=1,b=2,n=0.5", "fourier:seed=3,amplitude=0.9", "fourier:seed=4,components=3",
                            "corner:angle=12.5", "glyph:g", "glyph:U+00E9"}) {
     const Curve curve = make_curve(spec), again = make_curve(curve.name);
     EXPECT_EQ(again.name, curve.name);
     EXPECT_EQ(again.length(), curve.length()) << spec;
   }
+}
+
+// Component c of `fourier:seed=S,components=K` is fourier:seed=S+c moved along x, and the
+// components keep component_gap between their bounding boxes.
+TEST(CurveSpec, FourierComponentsAreTheSingleCurvesInARow) {
+  const Curve row = make_curve("fourier:seed=11,harmonics=4,components=3");
+  ASSERT_EQ(row.components.size(), 3u);
+  EXPECT_EQ(make_curve("fourier:seed=11,harmonics=4,components=1").name, make_curve("fourier:seed=11,harmonics=4").name);
+  double previous_right = -INFINITY;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Curve single = make_curve("fourier:seed=" + std::to_string(11 + c) + ",harmonics=4");
+    const Curve_component &moved = row.components[c], &original = single.components.front();
+    const Vector offset = moved.point(0) - original.point(0);
+    EXPECT_EQ(offset.y(), 0);
+    for (const double s : {0.1, 0.37, 0.8}) {
+      EXPECT_NEAR(moved.point(s).x() - original.point(s).x(), offset.x(), 1e-12);
+      EXPECT_NEAR(moved.point(s).y(), original.point(s).y(), 1e-12);
+    }
+    double left = INFINITY, right = -INFINITY;
+    for (int i = 0; i < 1000; ++i) {
+      left = std::min(left, moved.point(i / 1000.0).x());
+      right = std::max(right, moved.point(i / 1000.0).x());
+    }
+    EXPECT_GE(left - previous_right, component_gap - 1e-3) << c;
+    previous_right = right;
+  }
+  EXPECT_THROW(make_curve("fourier:components=0"), std::invalid_argument);
 }
 
 TEST(CurveSpec, ReadsAGroundTruth) {
