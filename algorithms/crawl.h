@@ -4,7 +4,7 @@
 // Delaunay neighbour is nearer, and close it when its two ends become near neighbours;
 // then start again from the shortest seed left, for the next component.
 //
-// As the authors' code (amaldevp/Crawl_through_Neighbors) does it:
+// Following the authors' code (amaldevp/Crawl_through_Neighbors), with one deviation:
 //   - seeds are the Delaunay edges from a point to its nearest neighbour, shortest first;
 //     a seed starts a component if neither end is visited yet;
 //   - a path closes, after at least four growth steps, when each end is among the other's
@@ -15,7 +15,8 @@
 //   - a path with no unvisited Delaunay neighbour at either end stays open: that is the
 //     open-curve heuristic, and why a curve with fewer than six points is never closed.
 // Every "nearer" is an exact comparison of squared distances, ties to the smaller index
-// (theirs compares float lengths); growth ties go to the seed's larger-index end.
+// (theirs compares float lengths); a growth tie goes to the end that started at the
+// seed's larger index, as theirs goes to its second end.
 //
 // O(n log n): each point's neighbours are ranked once, and each end keeps a cursor past
 // its visited ones, so the crawl reads every Delaunay edge a bounded number of times.
