@@ -20,18 +20,12 @@ class Ranked_neighbors {
   explicit Ranked_neighbors(const Delaunay_triangulation& dt) : first_(dt.size() + 1), cursor_(dt.size()) {
     for (Vertex v = 0; v < dt.size(); ++v) first_[v + 1] = first_[v] + dt.neighbors(v).size();
     ranked_.reserve(first_.back());
-    std::vector<double> key;
     for (Vertex v = 0; v < dt.size(); ++v) {
       const Point& p = dt.point(v);
       const auto neighbors = dt.neighbors(v);
       const auto begin = ranked_.insert(ranked_.end(), neighbors.begin(), neighbors.end());
-      std::sort(begin, ranked_.end(), [&](Vertex a, Vertex b) {
-        using geometry::squared_distance_approximation;
-        const auto s = geometry::certain_sign_of_difference(squared_distance_approximation(p, dt.point(a)),
-                                                            squared_distance_approximation(p, dt.point(b)));
-        if (s) return *s == CGAL::POSITIVE;
-        return graphs::closer(p, dt.point(a), a, dt.point(b), b);
-      });
+      std::sort(begin, ranked_.end(),
+                [&](Vertex a, Vertex b) { return graphs::closer(p, dt.point(a), a, dt.point(b), b); });
       cursor_[v] = first_[v];
     }
   }

@@ -71,14 +71,7 @@ bool dual_longer_than_edge(const Edge_with_apexes& e) {
 }
 
 bool at_least_right_angle(const Point& c, const Point& a, const Point& x) {
-  using geometry::certain_sign_of_difference, geometry::squared_distance_approximation;
-  // 2 (a - c).(x - c) = |ca|^2 + |cx|^2 - |ax|^2: sums of squares, for the cheap filter.
-  if (const auto s = certain_sign_of_difference(squared_distance_approximation(a, x),
-                                                squared_distance_approximation(c, a) + squared_distance_approximation(c, x)))
-    return *s != CGAL::POSITIVE;
-  return exact_sign([&]<class NT>(std::type_identity<NT>) {
-           return dot(difference<NT>(a, c), difference<NT>(x, c));
-         }) != CGAL::POSITIVE;
+  return graphs::angle_sign(a, x, c) != CGAL::POSITIVE;
 }
 
 bool angle_at_least(const Point& c, const Point& a, const Point& x, double cos_alpha) {

@@ -22,6 +22,7 @@ namespace {
 
 using geometry::certain_sign_of_difference;
 using geometry::squared_distance_approximation;
+using graphs::compare_distances;
 using Index = std::uint32_t;
 
 // CGAL's triangulation itself, not graphs::Delaunay_triangulation (flattening it to
@@ -41,12 +42,6 @@ using Triangulation = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 using Vertex_handle = Triangulation::Vertex_handle;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
-
-// The exact sign of |pb|^2 - |pa|^2 given both approximately: POSITIVE if a is closer to p.
-CGAL::Sign compare_distances(const Point& p, const Point& a, double pa2, const Point& b, double pb2) {
-  if (const auto s = certain_sign_of_difference(pa2, pb2)) return *s;
-  return graphs::compare_distances(p, a, b);
-}
 
 // Whether s lies in the open half-plane of p with nearest neighbour q, given the
 // approximate squared distances |pq|^2, |ps|^2 and |qs|^2.

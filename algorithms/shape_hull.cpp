@@ -17,20 +17,6 @@ using graphs::no_vertex;
 using graphs::Vertex;
 using Edge_id = std::uint32_t;
 
-// True if the angle prq is strictly obtuse: (p - r).(q - r) < 0, i.e. |pq|^2 > |rp|^2 + |rq|^2,
-// which the sums-of-squares filter settles almost always.
-bool obtuse_at(const Point& p, const Point& q, const Point& r) {
-  using geometry::squared_distance_approximation;
-  if (const auto s = geometry::certain_sign_of_difference(
-          squared_distance_approximation(p, q),
-          squared_distance_approximation(r, p) + squared_distance_approximation(r, q)))
-    return *s == CGAL::NEGATIVE;
-  return geometry::exact_sign([&]<class NT>(std::type_identity<NT>) {
-           using geometry::difference, geometry::dot;
-           return dot(difference<NT>(p, r), difference<NT>(q, r));
-         }) == CGAL::NEGATIVE;
-}
-
 // Every vertex's incident edges by neighbour index, to find edge uv in O(log degree).
 class Edge_index {
  public:
@@ -76,10 +62,8 @@ class Served_after {
   explicit Served_after(const Delaunay_triangulation& dt) : dt_(&dt) {}
   bool operator()(const Queued& a, const Queued& b) const {
     const Delaunay_edge &ea = dt_->edges()[a.edge], &eb = dt_->edges()[b.edge];
-    const auto cached = geometry::certain_sign_of_difference(a.squared_length, b.squared_length);
-    const CGAL::Sign s = cached ? *cached
-                                : graphs::compare_lengths(dt_->point(ea.source), dt_->point(ea.target),
-                                                          dt_->point(eb.source), dt_->point(eb.target));
+    const CGAL::Sign s = graphs::compare_lengths(dt_->point(ea.source), dt_->point(ea.target), a.squared_length,
+                                                 dt_->point(eb.source), dt_->point(eb.target), b.squared_length);
     return s == CGAL::POSITIVE || (s == CGAL::ZERO && std::tie(ea.source, ea.target) > std::tie(eb.source, eb.target));
   }
 
@@ -139,7 +123,7 @@ class Sculpture {
   bool queue_if_obtuse(Edge_id id) {
     const Delaunay_edge& e = edges_[id];
     const Point &p = dt_.point(e.source), &q = dt_.point(e.target);
-    if (!obtuse_at(p, q, dt_.point(remaining_apex(id)))) return false;
+    if (graphs::angle_sign(p, q, dt_.point(remaining_apex(id))) != CGAL::NEGATIVE) return false;
     queue_.push_back({geometry::squared_distance_approximation(p, q), id});
     return true;
   }

@@ -20,10 +20,8 @@ std::vector<Edge_with_length> with_lengths(std::span<const Point> points, std::s
 
 void sort_by_exact_length(std::span<const Point> points, std::vector<Edge_with_length>& edges) {
   const auto shorter = [&](const Edge_with_length& a, const Edge_with_length& b) {
-    const auto cached = geometry::certain_sign_of_difference(a.squared_length, b.squared_length);
-    const CGAL::Sign s =
-        cached ? *cached
-               : compare_lengths(points[a.source], points[a.target], points[b.source], points[b.target]);
+    const CGAL::Sign s = compare_lengths(points[a.source], points[a.target], a.squared_length, points[b.source],
+                                         points[b.target], b.squared_length);
     return s == CGAL::POSITIVE ||
            (s == CGAL::ZERO && std::tie(a.source, a.target) < std::tie(b.source, b.target));
   };

@@ -13,20 +13,43 @@ namespace curvebench::graphs {
 
 using geometry::Point;
 
-// The sign of |cd|^2 - |ab|^2: POSITIVE if segment ab is shorter than cd.
-inline CGAL::Sign compare_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
-  using geometry::difference, geometry::squared_distance_approximation, geometry::squared_length;
-  if (const auto s = geometry::certain_sign_of_difference(squared_distance_approximation(a, b),
-                                                          squared_distance_approximation(c, d)))
-    return *s;
+// The sign of |cd|^2 - |ab|^2 given both squared lengths rounded
+// (geometry::squared_distance_approximation), as sorts and queues keep them: POSITIVE if
+// segment ab is shorter than cd.
+inline CGAL::Sign compare_lengths(const Point& a, const Point& b, double ab2, const Point& c, const Point& d,
+                                  double cd2) {
+  if (const auto s = geometry::certain_sign_of_difference(ab2, cd2)) return *s;
+  using geometry::difference, geometry::squared_length;
   return geometry::exact_sign([&]<class NT>(std::type_identity<NT>) {
     return squared_length(difference<NT>(d, c)) - squared_length(difference<NT>(b, a));
   });
 }
 
+inline CGAL::Sign compare_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
+  using geometry::squared_distance_approximation;
+  return compare_lengths(a, b, squared_distance_approximation(a, b), c, d, squared_distance_approximation(c, d));
+}
+
 // The sign of |pb|^2 - |pa|^2: POSITIVE if a is closer to p than b.
 inline CGAL::Sign compare_distances(const Point& p, const Point& a, const Point& b) {
   return compare_lengths(p, a, p, b);
+}
+inline CGAL::Sign compare_distances(const Point& p, const Point& a, double pa2, const Point& b, double pb2) {
+  return compare_lengths(p, a, pa2, p, b, pb2);
+}
+
+// The sign of (p - r).(q - r): POSITIVE if the angle prq is acute, ZERO if right, NEGATIVE
+// if obtuse. 2 (p - r).(q - r) = |rp|^2 + |rq|^2 - |pq|^2, a comparison of sums of squares
+// that the cheap filter almost always decides.
+inline CGAL::Sign angle_sign(const Point& p, const Point& q, const Point& r) {
+  using geometry::squared_distance_approximation;
+  if (const auto s = geometry::certain_sign_of_difference(
+          squared_distance_approximation(p, q),
+          squared_distance_approximation(r, p) + squared_distance_approximation(r, q)))
+    return *s;
+  using geometry::difference, geometry::dot;
+  return geometry::exact_sign(
+      [&]<class NT>(std::type_identity<NT>) { return dot(difference<NT>(p, r), difference<NT>(q, r)); });
 }
 
 // True if a is strictly closer to p than b; at equal distance, the smaller index wins.
@@ -63,16 +86,7 @@ inline bool blocks(const Point& p, const Point& q, const Point& r, double beta, 
   if (beta == 2 && region == Beta_region::lune)
     return compare_lengths(r, p, p, q) == CGAL::POSITIVE && compare_lengths(r, q, p, q) == CGAL::POSITIVE;
   using geometry::cross, geometry::difference, geometry::dot, geometry::exact_sign, geometry::squared_length;
-  // (p - r).(q - r) = (|rp|^2 + |rq|^2 - |pq|^2) / 2: the angle at r as a comparison of
-  // sums of squares, which the cheap filter decides.
-  using geometry::squared_distance_approximation;
-  const auto angle_cosine_sign = [&] {
-    if (const auto s = geometry::certain_sign_of_difference(
-            squared_distance_approximation(p, q),
-            squared_distance_approximation(r, p) + squared_distance_approximation(r, q)))
-      return *s;
-    return exact_sign([&]<class NT>(std::type_identity<NT>) { return dot(difference<NT>(p, r), difference<NT>(q, r)); });
-  }();
+  const CGAL::Sign angle_cosine_sign = angle_sign(p, q, r);
   if (beta < 1) {
     return angle_cosine_sign == CGAL::NEGATIVE &&
            exact_sign([&]<class NT>(std::type_identity<NT>) {
