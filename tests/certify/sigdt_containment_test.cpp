@@ -31,20 +31,13 @@
 #include "geometry/local_feature_size.h"
 #include "geometry/sampling.h"
 #include "graphs/sphere_of_influence_delaunay_graph.h"
+#include "tests/support/edge_sets.h"
 
 namespace curvebench::certify {
 namespace {
 
 using geometry::Edge;
 using geometry::Point;
-
-std::vector<Edge> cycle(std::size_t n) {
-  std::vector<Edge> edges;
-  for (std::size_t i = 0; i + 1 < n; ++i) edges.emplace_back(i, i + 1);
-  edges.emplace_back(0, n - 1);
-  std::sort(edges.begin(), edges.end());
-  return edges;
-}
 
 bool contains(const std::vector<Edge>& graph, const std::vector<Edge>& edges) {
   return std::includes(graph.begin(), graph.end(), edges.begin(), edges.end());
@@ -67,7 +60,7 @@ RC_GTEST_PROP(SigdtContainment, HoldsForEpsilonBelowOneThirdAndUniformityAtMostT
   for (const Point& p : dense.points)
     if (!dropped(random)) points.push_back(p);
   RC_PRE(points.size() >= 6u);
-  const std::vector<Edge> truth = cycle(points.size());
+  const std::vector<Edge> truth = testing::cycle_edges(points.size());
 
   const double measured_epsilon = measure_epsilon(lfs, points, minimum_lfs).epsilon;
   const double uniformity = measure_uniformity(points, truth).uniformity;
@@ -92,7 +85,7 @@ TEST(SigdtContainment, NeedsLocalUniformity) {
   points.push_back(at(step));
   points.push_back(at(step + 0.001));
   for (int i = 2; i < 60; ++i) points.push_back(at(i * step));
-  const std::vector<Edge> truth = cycle(points.size());
+  const std::vector<Edge> truth = testing::cycle_edges(points.size());
   EXPECT_LT(measure_epsilon(lfs, points, geometry::default_minimum_lfs(lfs)).epsilon, 0.1);
   EXPECT_GT(measure_uniformity(points, truth).uniformity, 2);
   const std::vector<Edge> sigdt = graphs::edge_list(graphs::sphere_of_influence_delaunay_graph(points));
