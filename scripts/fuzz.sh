@@ -10,7 +10,9 @@
 # Builds the clang tree build-fuzz/ (packages: scripts/setup.sh; nothing is installed
 # here), finds the targets in it (fuzz/fuzz_NAME), and runs them one after another. New
 # inputs go to a temporary directory placed before the committed corpus fuzz/corpus/NAME/,
-# which is only read, so a run leaves the repository as it was (unless --merge).
+# which is only read, so a run leaves the repository as it was (unless --merge). Targets
+# run side by side, one per core (libFuzzer is single-threaded), so CI's minute per
+# target costs a minute per core count.
 # Per-target libFuzzer flags (max_len, ...) come from fuzz/NAME.options (`key = value`
 # lines, as in OSS-Fuzz), a dictionary from fuzz/NAME.dict. Findings and each target's log go to
 # build-fuzz/artifacts/NAME/. Prints one line per target; exits 1 if any found something.
@@ -84,5 +86,11 @@ fuzz_target() {
 status=0
 mapfile -t targets < <(find "$build/fuzz" -maxdepth 1 -type f -name 'fuzz_*' -perm -u+x | sort)
 if ((${#targets[@]} == 0)); then echo "fuzz: no fuzz_* target in $build/fuzz" >&2; exit 1; fi
-for binary in "${targets[@]}"; do fuzz_target "$binary" || status=1; done
+running=0
+for binary in "${targets[@]}"; do
+  if ((running == $(nproc))); then wait -n || status=1; ((running--)); fi
+  fuzz_target "$binary" &
+  ((++running))
+done
+while ((running > 0)); do wait -n || status=1; ((running--)); done
 exit $status
