@@ -6,8 +6,8 @@
 
 namespace curvebench::graphs {
 
-Graph k_nearest_neighbor_graph(const Delaunay_triangulation& dt, std::size_t k) {
-  std::vector<Edge> edges;
+std::vector<std::vector<Vertex>> k_nearest_neighbors(const Delaunay_triangulation& dt, std::size_t k) {
+  std::vector<std::vector<Vertex>> ranked(dt.size());
   std::vector<Vertex> seen(dt.size(), no_vertex);  // seen[v] == p: v was reached from p
   for (Vertex p = 0; p < dt.size() && k > 0; ++p) {
     const Point& center = dt.point(p);
@@ -30,8 +30,17 @@ Graph k_nearest_neighbor_graph(const Delaunay_triangulation& dt, std::size_t k) 
       for (const Vertex w : dt.neighbors(v))
         if (seen[w] != p) seen[w] = p, frontier.push(w);
     }
-    for (; !nearest.empty(); nearest.pop()) edges.emplace_back(p, nearest.top());
+    ranked[p].resize(nearest.size());
+    for (auto slot = ranked[p].rbegin(); !nearest.empty(); nearest.pop()) *slot++ = nearest.top();
   }
+  return ranked;
+}
+
+Graph k_nearest_neighbor_graph(const Delaunay_triangulation& dt, std::size_t k) {
+  std::vector<Edge> edges;
+  const auto ranked = k_nearest_neighbors(dt, k);
+  for (Vertex p = 0; p < dt.size(); ++p)
+    for (const Vertex q : ranked[p]) edges.emplace_back(p, q);
   return make_graph(dt.points(), edges);
 }
 

@@ -7,10 +7,15 @@
 // them in order of distance. O(n k log k) after the triangulation.
 #pragma once
 
+#include <vector>
+
 #include "graphs/delaunay_triangulation.h"
 #include "graphs/graph.h"
 
 namespace curvebench::graphs {
+
+// Each point's k nearest other points (all of them if there are fewer), nearest first.
+std::vector<std::vector<Vertex>> k_nearest_neighbors(const Delaunay_triangulation& dt, std::size_t k);
 
 Graph k_nearest_neighbor_graph(const Delaunay_triangulation& dt, std::size_t k);
 inline Graph k_nearest_neighbor_graph(std::span<const Point> points, std::size_t k) {
