@@ -1,6 +1,9 @@
 #include "algorithms/registry.h"
 
 #include <algorithm>
+#include <deque>
+#include <mutex>
+#include <string>
 #include <vector>
 
 #include "algorithms/alpha_shape.h"
@@ -9,12 +12,17 @@
 #include "algorithms/crawl.h"
 #include "algorithms/crust.h"
 #include "algorithms/emst.h"
+#include "algorithms/fit_connect.h"
 #include "algorithms/gathan.h"
 #include "algorithms/gathang.h"
 #include "algorithms/hnn_crust.h"
 #include "algorithms/nn_crust.h"
+#include "algorithms/optimal_transport.h"
+#include "algorithms/outlier_filter.h"
 #include "algorithms/peel.h"
 #include "algorithms/shape_hull.h"
+#include "algorithms/stretch_denoise.h"
+#include "algorithms/voronoi_labeling.h"
 #include "geometry/point_set.h"
 
 namespace curvebench::algorithms {
@@ -25,13 +33,17 @@ std::span<const Algorithm> registry() {
       beta_skeleton_algorithm(),
       emst_algorithm(),
       shape_hull_algorithm(),
+      voronoi_labeling_algorithm(),
       crawl_algorithm(),
       crust_algorithm(),
       nn_crust_algorithm(),
       conservative_crust_algorithm(),
       hnn_crust_algorithm(),
+      fit_connect_algorithm(),
+      stretch_denoise_algorithm(),
       gathan_algorithm(),
       gathang_algorithm(),
+      optimal_transport_algorithm(),
       peel_algorithm(),
   };
   return algorithms;
@@ -40,7 +52,21 @@ std::span<const Algorithm> registry() {
 const Algorithm* find_algorithm(std::string_view name) {
   const auto all = registry();
   const auto found = std::ranges::find(all, name, &Algorithm::name);
-  return found == all.end() ? nullptr : &*found;
+  if (found != all.end()) return &*found;
+  if (!name.ends_with(outlier_filter_suffix)) return nullptr;
+  const Algorithm* base = find_algorithm(name.substr(0, name.size() - outlier_filter_suffix.size()));
+  if (base == nullptr) return nullptr;
+  // Built on first use and kept, with its name, for the program's lifetime (a deque
+  // does not move its elements), as the registry's own entries are.
+  static std::mutex mutex;
+  static std::deque<std::string> names;
+  static std::deque<Algorithm> filtered;
+  const std::scoped_lock lock(mutex);
+  const auto made = std::ranges::find(filtered, name, &Algorithm::name);
+  if (made != filtered.end()) return &*made;
+  Algorithm algorithm = with_outlier_filter(*base);
+  algorithm.name = names.emplace_back(name);
+  return &filtered.emplace_back(std::move(algorithm));
 }
 
 Reconstruction reconstruct(const Algorithm& algorithm, std::span<const Point> points, const Parameter_values& values) {

@@ -13,7 +13,11 @@ namespace curvebench::algorithms {
 // In the survey's order of Table 1.
 std::span<const Algorithm> registry();
 
-// nullptr if no algorithm has that name.
+// A registered algorithm behind the outlier pre-filter: "nn-crust+outlier-filter".
+inline constexpr std::string_view outlier_filter_suffix = "+outlier-filter";
+
+// nullptr if no algorithm has that name. NAME+outlier-filter is NAME behind the outlier
+// pre-filter (outlier_filter.h), for any registered NAME.
 const Algorithm* find_algorithm(std::string_view name);
 
 // Runs `algorithm` on any point list: checks the parameters, merges exact duplicates

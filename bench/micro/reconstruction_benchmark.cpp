@@ -1,15 +1,18 @@
 // Runtime scaling of every registered reconstruction algorithm on points sampled along a
 // smooth closed curve (n = 10^3 ... 10^6 at equal arc-length steps on a random Fourier
 // curve), next to the bare CGAL Delaunay triangulation of the same points: the issue's
-// targets are ratios to that row.
+// targets are ratios to that row. A size is skipped once the one before it took over 10 s
+// (size_budget.h).
 //
 //   reconstruction_benchmark --benchmark_filter='/1000000$'   # the n = 10^6 row of each
+#include <chrono>
 #include <map>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <benchmark/benchmark.h>
 
 #include "algorithms/registry.h"
+#include "bench/micro/size_budget.h"
 #include "geometry/analytic_curves.h"
 #include "geometry/sampling.h"
 
@@ -29,14 +32,19 @@ const std::vector<Point>& curve_sample(std::size_t n) {
 }
 
 template <class Run>
-void run(benchmark::State& state, Run reconstruct) {
+void run(benchmark::State& state, const std::string& name, Run reconstruct) {
+  static bench::Size_budget budget(std::chrono::seconds(10));
+  if (!budget.admits(state, name)) return;
   const auto& points = curve_sample(static_cast<std::size_t>(state.range(0)));
+  const auto start = std::chrono::steady_clock::now();
   for (auto _ : state) benchmark::DoNotOptimize(reconstruct(points));
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  budget.record(name, state.range(0), elapsed.count() / static_cast<double>(state.iterations()));
   state.SetComplexityN(state.range(0));
 }
 
 void cgal_delaunay(benchmark::State& state) {
-  run(state, [](const std::vector<Point>& points) {
+  run(state, "cgal_delaunay_triangulation", [](const std::vector<Point>& points) {
     CGAL::Delaunay_triangulation_2<geometry::Kernel> dt(points.begin(), points.end());
     return dt.number_of_faces();
   });
@@ -51,7 +59,8 @@ void register_all() {
   // so the duplicate merge would only add its own cost to every row.
   for (const algorithms::Algorithm& algorithm : algorithms::registry())
     sizes(benchmark::RegisterBenchmark(std::string(algorithm.name).c_str(), [&algorithm](benchmark::State& state) {
-      run(state, [&](const std::vector<Point>& points) { return algorithm.reconstruct(points, {}).edges.size(); });
+      run(state, std::string(algorithm.name),
+          [&](const std::vector<Point>& points) { return algorithm.reconstruct(points, {}).edges.size(); });
     }));
 }
 

@@ -105,10 +105,25 @@ check "image-sample --curve without --resolution is a usage error" test "$status
 check "list names the registered algorithms" test "$("$curvebench" list --names | wc -l)" -ge 9
 awk 'BEGIN { for (k = 0; k < 12; ++k) printf "%.17g %.17g\n", cos(k * 3.14159265358979 / 6), sin(k * 3.14159265358979 / 6);
              printf "%.17g %.17g\n", 1, 0 }' >"$work/ring.xy"
+# Every edge indexes a line of the --points-out file.
+edges_index_points() {  # edges_index_points EDGES POINTS
+  awk -v n="$(grep -c . "$2")" '$1 < 0 || $2 >= n || $1 >= $2 { bad = 1 } END { exit bad }' "$1"
+}
 for algorithm in $("$curvebench" list --names); do
-  "$curvebench" reconstruct -q -a "$algorithm" -i "$work/ring.xy" -o "$work/ring-$algorithm.edges" 2>/dev/null
+  "$curvebench" reconstruct -q -a "$algorithm" -i "$work/ring.xy" -o "$work/ring-$algorithm.edges" \
+    --points-out "$work/ring-$algorithm.xy" 2>/dev/null
   check "$algorithm reconstructs a 13-line file" test $? -eq 0
+  check "$algorithm: its edges index its --points-out" edges_index_points "$work/ring-$algorithm.edges" "$work/ring-$algorithm.xy"
 done
+check "an interpolating algorithm's --points-out is the input" test "$(grep -c . "$work/ring-nn-crust.xy")" -eq 13
+"$curvebench" reconstruct -q -a stretch-denoise -i "$work/ring.xy" -o "$work/x.edges" 2>"$work/err"
+check "a denoising algorithm without --points-out is an error that says so" test "$?" -eq 2 -a "$(grep -c -- --points-out "$work/err")" -eq 1
+{ cat "$work/ring.xy"; echo "40 40"; } >"$work/ring-outlier.xy"
+"$curvebench" reconstruct -q -a nn-crust+outlier-filter -i "$work/ring-outlier.xy" -o "$work/filtered.edges" \
+  --points-out "$work/filtered.xy"
+check "nn-crust+outlier-filter keeps the 12 ring points" test "$(grep -c . "$work/filtered.xy")" -eq 12
+check "nn-crust+outlier-filter: the 12-cycle" diff <(awk 'BEGIN { for (k = 0; k < 11; ++k) print k, k + 1; print 0, 11 }' | sort -n -k1,1 -k2,2) \
+  "$work/filtered.edges"
 check "nn-crust: the 12-cycle" diff <(awk 'BEGIN { for (k = 0; k < 11; ++k) print k, k + 1; print 0, 11 }' | sort -n -k1,1 -k2,2) \
   "$work/ring-nn-crust.edges"
 head -12 "$work/ring.xy" >"$work/ring12.xy"
