@@ -5,6 +5,7 @@
 #include <numeric>
 #include <tuple>
 
+#include "graphs/delaunay_edge_index.h"
 #include "graphs/delaunay_triangulation.h"
 #include "graphs/proximity_predicates.h"
 
@@ -15,39 +16,7 @@ using graphs::Delaunay_edge;
 using graphs::Delaunay_triangulation;
 using graphs::no_vertex;
 using graphs::Vertex;
-using Edge_id = std::uint32_t;
-
-// Every vertex's incident edges by neighbour index, to find edge uv in O(log degree).
-class Edge_index {
- public:
-  explicit Edge_index(const Delaunay_triangulation& dt) : first_(dt.size() + 1, 0) {
-    const auto edges = dt.edges();
-    for (const Delaunay_edge& e : edges) {
-      ++first_[e.source + 1];
-      ++first_[e.target + 1];
-    }
-    std::partial_sum(first_.begin(), first_.end(), first_.begin());
-    incident_.resize(first_.back());
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
-    for (Edge_id id = 0; id < edges.size(); ++id) {
-      incident_[next[edges[id].source]++] = {edges[id].target, id};
-      incident_[next[edges[id].target]++] = {edges[id].source, id};
-    }
-    for (Vertex v = 0; v < dt.size(); ++v)
-      std::sort(incident_.begin() + first_[v], incident_.begin() + first_[v + 1]);
-  }
-
-  // The id of edge uv, which must exist.
-  Edge_id find(Vertex u, Vertex v) const {
-    if (first_[u + 1] - first_[u] > first_[v + 1] - first_[v]) std::swap(u, v);
-    const auto begin = incident_.begin() + first_[u], end = incident_.begin() + first_[u + 1];
-    return std::lower_bound(begin, end, std::pair<Vertex, Edge_id>{v, 0})->second;
-  }
-
- private:
-  std::vector<std::size_t> first_;
-  std::vector<std::pair<Vertex, Edge_id>> incident_;
-};
+using Edge_id = graphs::Delaunay_edge_index::Edge_id;
 
 // A boundary edge waiting in the queue.
 struct Queued {
@@ -143,7 +112,7 @@ class Sculpture {
 
   const Delaunay_triangulation& dt_;
   std::span<const Delaunay_edge> edges_;
-  Edge_index index_;
+  graphs::Delaunay_edge_index index_;
   std::vector<std::uint8_t> sides_;
   std::vector<bool> on_boundary_;
   Served_after served_after_;

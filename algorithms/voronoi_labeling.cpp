@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "geometry/exact_sign.h"
+#include "graphs/delaunay_edge_index.h"
 #include "graphs/delaunay_triangulation.h"
 #include "graphs/proximity_predicates.h"
 
@@ -104,32 +105,6 @@ CGAL::Sign compare_radii(const Point& a1, const Point& b1, const Point& c1, cons
 
 // ---- The triangulation as triangles, their adjacency and their Voronoi vertices --------
 
-// Each vertex's incident Delaunay edges by neighbour index, to find edge uv.
-class Edge_lookup {
- public:
-  explicit Edge_lookup(const Delaunay_triangulation& dt) : first_(dt.size() + 1, 0) {
-    const auto edges = dt.edges();
-    for (const Delaunay_edge& e : edges) ++first_[e.source + 1], ++first_[e.target + 1];
-    std::partial_sum(first_.begin(), first_.end(), first_.begin());
-    entries_.resize(first_.back());
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
-    for (Id id = 0; id < edges.size(); ++id) {
-      entries_[next[edges[id].source]++] = {edges[id].target, id};
-      entries_[next[edges[id].target]++] = {edges[id].source, id};
-    }
-    for (Vertex v = 0; v < dt.size(); ++v) std::sort(entries_.begin() + first_[v], entries_.begin() + first_[v + 1]);
-  }
-  Id find(Vertex u, Vertex v) const {
-    if (first_[u + 1] - first_[u] > first_[v + 1] - first_[v]) std::swap(u, v);
-    const auto begin = entries_.begin() + first_[u], end = entries_.begin() + first_[u + 1];
-    return std::lower_bound(begin, end, std::pair<Vertex, Id>{v, 0})->second;
-  }
-
- private:
-  std::vector<std::size_t> first_;
-  std::vector<std::pair<Vertex, Id>> entries_;
-};
-
 Id find_root(std::vector<Id>& parent, Id x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
   return x;
@@ -173,7 +148,7 @@ class Labeling {
       if (e.left != no_vertex && e.left > e.target) triangles_.push_back({e.source, e.target, e.left});
       if (e.right != no_vertex && e.right > e.target) triangles_.push_back({e.target, e.source, e.right});
     }
-    const Edge_lookup lookup(dt_);
+    const graphs::Delaunay_edge_index lookup(dt_);
     edge_triangles_.assign(edges_.size(), {no_id, no_id});
     first_triangle_.assign(dt_.size() + 1, 0);
     for (Id t = 0; t < triangles_.size(); ++t)

@@ -35,6 +35,8 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::along;
+using testing::scaled_by;
 
 struct Vec {
   Rational x, y;
@@ -165,25 +167,7 @@ bool convex_position(const std::vector<Point>& points) {
   return hull.size() == points.size();
 }
 
-// Points along the closed polygon `corners`, side i cut into steps[i] equal parameter steps
-// (power-of-two steps on dyadic corners: exact, so collinear runs stay collinear).
-std::vector<Point> along(const std::vector<Point>& corners, const std::vector<int>& steps) {
-  std::vector<Point> points;
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    const Point &a = corners[i], &b = corners[(i + 1) % corners.size()];
-    for (int k = 0; k < steps[i]; ++k) {
-      const double t = double(k) / steps[i];
-      points.emplace_back(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
-    }
-  }
-  return points;
-}
 
-std::vector<Point> scaled_by(const std::vector<Point>& points, int exponent) {
-  std::vector<Point> scaled;
-  for (const Point& p : points) scaled.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
-  return scaled;
-}
 
 // Where the Delaunay triangulation is unique, the brute force's empty-circle triangles are it.
 RC_GTEST_PROP(ShapeHull, EqualsBruteForceInGeneralPosition, ()) {

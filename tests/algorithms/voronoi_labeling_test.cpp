@@ -35,6 +35,8 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::along;
+using testing::scaled_by;
 
 struct Q {
   Rational x, y;
@@ -181,11 +183,6 @@ bool is_canonical(const Edges& edges, std::size_t n) {
   return std::is_sorted(edges.begin(), edges.end()) && std::adjacent_find(edges.begin(), edges.end()) == edges.end();
 }
 
-std::vector<Point> scaled_by(const std::vector<Point>& points, int exponent) {
-  std::vector<Point> scaled;
-  for (const Point& p : points) scaled.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
-  return scaled;
-}
 
 bool all_normal(const std::vector<Point>& points) {
   return std::all_of(points.begin(), points.end(), [](const Point& p) {
@@ -193,18 +190,6 @@ bool all_normal(const std::vector<Point>& points) {
   });
 }
 
-// Points along the closed polygon `corners`, side i cut into steps[i] equal parameter steps.
-std::vector<Point> along(const std::vector<Point>& corners, const std::vector<int>& steps) {
-  std::vector<Point> points;
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    const Point &a = corners[i], &b = corners[(i + 1) % corners.size()];
-    for (int k = 0; k < steps[i]; ++k) {
-      const double t = double(k) / steps[i];
-      points.emplace_back(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
-    }
-  }
-  return points;
-}
 
 // A random Fourier curve (geometry::random_fourier_curve) safely epsilon-sampled, with its chain.
 testing::Sampled_case sampled_curve(std::uint64_t seed, int harmonics, double amplitude, double decay, double epsilon) {

@@ -42,4 +42,25 @@ inline std::vector<geometry::Point> regular_polygon(std::size_t k, double radius
   return points;
 }
 
+// Points along the closed polygon `corners`, side i cut into steps[i] equal parameter
+// steps (power-of-two steps on dyadic corners: exact, so collinear runs stay collinear).
+inline std::vector<geometry::Point> along(const std::vector<geometry::Point>& corners, const std::vector<int>& steps) {
+  std::vector<geometry::Point> points;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const geometry::Point &a = corners[i], &b = corners[(i + 1) % corners.size()];
+    for (int k = 0; k < steps[i]; ++k) {
+      const double t = double(k) / steps[i];
+      points.emplace_back(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+    }
+  }
+  return points;
+}
+
+// Every point times 2^exponent: exact, so every predicate keeps its sign.
+inline std::vector<geometry::Point> scaled_by(const std::vector<geometry::Point>& points, int exponent) {
+  std::vector<geometry::Point> scaled;
+  for (const geometry::Point& p : points) scaled.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
+  return scaled;
+}
+
 }  // namespace curvebench::testing
