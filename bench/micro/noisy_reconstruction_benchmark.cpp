@@ -46,7 +46,7 @@ void run(benchmark::State& state, const algorithms::Algorithm& algorithm, const 
 }
 
 void register_all() {
-  static bench::Size_budget budget(std::chrono::seconds(10));
+  static bench::Size_budget budget(std::chrono::seconds(60));
   fish();  // read now, so that a missing file stops the run before it starts
   for (const algorithms::Algorithm& algorithm : algorithms::registry()) {
     if (algorithm.capabilities.noise == algorithms::Support::no) continue;
