@@ -53,7 +53,7 @@ Algorithm with_outlier_filter(const Algorithm& algorithm) {
   static const Parameter factor{.name = "outlier_factor", .default_value = Outlier_filter_options{}.factor,
                                 .minimum = 1, .maximum = 1e6,
                                 .meaning = "outlier filter: drop p if its k-th neighbour distance exceeds this "
-                                           "times its neighbours' median"};
+                                           "times the median one over all points"};
   Algorithm filtered = algorithm;
   filtered.parameters.push_back(neighbors);
   filtered.parameters.push_back(factor);

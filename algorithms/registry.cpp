@@ -54,18 +54,19 @@ const Algorithm* find_algorithm(std::string_view name) {
   const auto found = std::ranges::find(all, name, &Algorithm::name);
   if (found != all.end()) return &*found;
   if (!name.ends_with(outlier_filter_suffix)) return nullptr;
-  const Algorithm* base = find_algorithm(name.substr(0, name.size() - outlier_filter_suffix.size()));
-  if (base == nullptr) return nullptr;
-  // Built on first use and kept, with its name, for the program's lifetime (a deque
-  // does not move its elements), as the registry's own entries are.
+  const auto base = std::ranges::find(all, name.substr(0, name.size() - outlier_filter_suffix.size()), &Algorithm::name);
+  if (base == all.end()) return nullptr;
+  // Built on first use and kept, with its name and title, for the program's lifetime (a
+  // deque does not move its elements), as the registry's own entries are.
   static std::mutex mutex;
-  static std::deque<std::string> names;
+  static std::deque<std::string> texts;
   static std::deque<Algorithm> filtered;
   const std::scoped_lock lock(mutex);
   const auto made = std::ranges::find(filtered, name, &Algorithm::name);
   if (made != filtered.end()) return &*made;
   Algorithm algorithm = with_outlier_filter(*base);
-  algorithm.name = names.emplace_back(name);
+  algorithm.name = texts.emplace_back(name);
+  algorithm.title = texts.emplace_back(std::string(base->title) + " + outlier filter");
   return &filtered.emplace_back(std::move(algorithm));
 }
 

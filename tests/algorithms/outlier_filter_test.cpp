@@ -117,6 +117,8 @@ TEST(OutlierFilter, LetsAnInterpolatingAlgorithmReconstructACircleAmongOutliers)
   ASSERT_NE(filtered, nullptr);
   EXPECT_EQ(find_algorithm("nn-crust+outlier-filter"), filtered) << "built once";
   EXPECT_EQ(find_algorithm("no-such+outlier-filter"), nullptr);
+  EXPECT_EQ(find_algorithm("nn-crust+outlier-filter+outlier-filter"), nullptr) << "one filter is enough";
+  EXPECT_EQ(filtered->title, "NN-Crust + outlier filter");
   EXPECT_EQ(filtered->name, "nn-crust+outlier-filter");
   EXPECT_EQ(filtered->capabilities.outliers, Support::yes);
 
