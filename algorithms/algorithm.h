@@ -64,6 +64,9 @@ struct Algorithm {
   Capabilities capabilities;
   Sampling_condition condition;
   Reconstruct reconstruct;
+  // False where the same input may give different output between runs: Optimal
+  // Transport, whose CGAL implementation breaks cost ties by memory address.
+  bool repeatable = true;
 };
 
 }  // namespace curvebench::algorithms

@@ -112,6 +112,7 @@ Algorithm optimal_transport_algorithm() {
                      .tolerance = values[tolerance],
                      .relocation = static_cast<unsigned>(values[relocation])});
       },
+      .repeatable = false,
   };
 }
 

@@ -1,8 +1,8 @@
 // Optimal Transport (algorithms/optimal_transport.h), CGAL's optimal-transport
 // simplification behind the registry: against the circle it was sampled from (closed-form
 // distances), with and without noise and outliers; the vertex-count stop; laws on any
-// input (valid output, the same output on a second run, scaling by 2^k scales the output
-// exactly); degenerate and extreme-scale input.
+// input (valid output); degenerate and extreme-scale input. No law compares two runs:
+// the output is not repeatable (repeatable = false in the registry).
 #include <gtest/gtest.h>
 
 #include <rapidcheck/gtest.h>
@@ -142,34 +142,19 @@ TEST(OptimalTransport, IsInTheRegistryWithItsParameters) {
   with_duplicates.insert(with_duplicates.end(), points.begin(), points.begin() + 20);
   const Reconstruction direct = optimal_transport_reconstruction(points, {.vertices = 30});
   const Reconstruction registered = reconstruct(*algorithm, with_duplicates, {{"vertices", 30}});
-  EXPECT_EQ(registered.points, direct.points) << "duplicates merged before the transport";
-  EXPECT_EQ(registered.edges, direct.edges);
+  // Not equal point for point: CGAL breaks cost ties by memory address (repeatable = false).
+  expect_valid(registered);
+  EXPECT_EQ(registered.points.size(), direct.points.size()) << "duplicates merged before the transport";
+  EXPECT_FALSE(algorithm->repeatable);
   EXPECT_THROW(reconstruct(*algorithm, points, {{"relocation", 0.5}}), std::invalid_argument);
 }
 
-RC_GTEST_PROP(OptimalTransportLaws, ValidAndRepeatableOnAnyInput, ()) {
+RC_GTEST_PROP(OptimalTransportLaws, ValidOnAnyInput, ()) {
   const auto points = *testing::point_sets(40);
   const Reconstruction first = optimal_transport_reconstruction(points);
   for (const Point& p : first.points) RC_ASSERT(std::isfinite(p.x()) && std::isfinite(p.y()));
   for (const auto& [i, j] : first.edges) RC_ASSERT(i < j && j < first.points.size());
   RC_ASSERT(std::is_sorted(first.edges.begin(), first.edges.end()));
-  const Reconstruction second = optimal_transport_reconstruction(points);
-  RC_ASSERT(second.points == first.points);
-  RC_ASSERT(second.edges == first.edges);
-}
-
-// The points are mapped into the unit box by a power of two, so scaling the input by 2^k
-// changes no step of the transport: the output is the same, scaled exactly.
-RC_GTEST_PROP(OptimalTransportLaws, ScalingByAPowerOfTwoScalesTheOutput, ()) {
-  const auto points = *testing::uniform_points(60);
-  const int k = *rc::gen::inRange(-400, 400);
-  std::vector<Point> scaled;
-  for (const Point& p : points) scaled.emplace_back(std::ldexp(p.x(), k), std::ldexp(p.y(), k));
-  const Reconstruction original = optimal_transport_reconstruction(points), result = optimal_transport_reconstruction(scaled);
-  RC_ASSERT(result.edges == original.edges);
-  RC_ASSERT(result.points.size() == original.points.size());
-  for (std::size_t i = 0; i < result.points.size(); ++i)
-    RC_ASSERT(result.points[i] == Point(std::ldexp(original.points[i].x(), k), std::ldexp(original.points[i].y(), k)));
 }
 
 }  // namespace
