@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <span>
 
 #include "algorithms/optimal_transport.h"
 #include "algorithms/registry.h"
@@ -39,6 +40,18 @@ double distance_to_segment(const Point& p, const Point& a, const Point& b) {
   return std::hypot(p.x() - a.x() - t * dx, p.y() - a.y() - t * dy);
 }
 
+// The largest distance from a sample to the output's edges: how well the output covers them.
+double farthest_sample(std::span<const Point> samples, const Reconstruction& result) {
+  double farthest = 0;
+  for (const Point& p : samples) {
+    double nearest = INFINITY;
+    for (const auto& [i, j] : result.edges)
+      nearest = std::min(nearest, distance_to_segment(p, result.points[i], result.points[j]));
+    farthest = std::max(farthest, nearest);
+  }
+  return farthest;
+}
+
 void expect_valid(const Reconstruction& result) {
   for (const Point& p : result.points) EXPECT_TRUE(std::isfinite(p.x()) && std::isfinite(p.y())) << p;
   for (std::size_t k = 0; k < result.edges.size(); ++k) {
@@ -59,14 +72,7 @@ TEST(OptimalTransport, SimplifiesANoisyCircleIntoAPolygonOnIt) {
     // Every output vertex near the circle; every sample near the output (it covers the
     // whole circle, not an arc of it); the polygon's edges, on a circle, are chords.
     for (const Point& p : result.points) EXPECT_LT(distance_to_unit_circle(p), 0.1) << "sigma " << sigma << ": " << p;
-    double farthest_sample = 0;
-    for (const Point& p : points) {
-      double nearest = INFINITY;
-      for (const auto& [i, j] : result.edges)
-        nearest = std::min(nearest, distance_to_segment(p, result.points[i], result.points[j]));
-      farthest_sample = std::max(farthest_sample, nearest);
-    }
-    EXPECT_LT(farthest_sample, 0.15) << "sigma " << sigma;
+    EXPECT_LT(farthest_sample(points, result), 0.15) << "sigma " << sigma;
   }
 }
 
@@ -78,23 +84,13 @@ TEST(OptimalTransport, CoversTheCircleAmongOutliersAndIsCleanBehindTheFilter) {
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> anywhere(-1, 1);
   for (int k = 0; k < 30; ++k) points.emplace_back(anywhere(random), anywhere(random));
-  const auto farthest_sample_from = [&](const Reconstruction& result) {
-    double farthest = 0;
-    for (const Point& p : circle) {
-      double nearest = INFINITY;
-      for (const auto& [i, j] : result.edges)
-        nearest = std::min(nearest, distance_to_segment(p, result.points[i], result.points[j]));
-      farthest = std::max(farthest, nearest);
-    }
-    return farthest;
-  };
   const Reconstruction plain = optimal_transport_reconstruction(points);
   expect_valid(plain);
-  EXPECT_LT(farthest_sample_from(plain), 0.15);
+  EXPECT_LT(farthest_sample(circle, plain), 0.15);
 
   const Reconstruction filtered = reconstruct(*find_algorithm("optimal-transport+outlier-filter"), points);
   expect_valid(filtered);
-  EXPECT_LT(farthest_sample_from(filtered), 0.15);
+  EXPECT_LT(farthest_sample(circle, filtered), 0.15);
   for (const Point& p : filtered.points) EXPECT_LT(distance_to_unit_circle(p), 0.1) << p;
 }
 
