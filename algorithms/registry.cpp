@@ -8,20 +8,25 @@
 
 #include "algorithms/alpha_shape.h"
 #include "algorithms/beta_skeleton.h"
+#include "algorithms/connect2d.h"
 #include "algorithms/conservative_crust.h"
 #include "algorithms/crawl.h"
 #include "algorithms/crust.h"
+#include "algorithms/discur.h"
 #include "algorithms/emst.h"
 #include "algorithms/fit_connect.h"
 #include "algorithms/gathan.h"
 #include "algorithms/gathang.h"
 #include "algorithms/hnn_crust.h"
+#include "algorithms/lenz.h"
 #include "algorithms/nn_crust.h"
 #include "algorithms/optimal_transport.h"
 #include "algorithms/outlier_filter.h"
 #include "algorithms/peel.h"
 #include "algorithms/shape_hull.h"
+#include "algorithms/sig_connect2d.h"
 #include "algorithms/stretch_denoise.h"
+#include "algorithms/vicur.h"
 #include "algorithms/voronoi_labeling.h"
 #include "geometry/point_set.h"
 
@@ -32,12 +37,15 @@ std::span<const Algorithm> registry() {
       alpha_shape_algorithm(),
       beta_skeleton_algorithm(),
       emst_algorithm(),
+      connect2d_algorithm(),
+      sig_connect2d_algorithm(),
       shape_hull_algorithm(),
       voronoi_labeling_algorithm(),
       crawl_algorithm(),
       crust_algorithm(),
       nn_crust_algorithm(),
       conservative_crust_algorithm(),
+      lenz_algorithm(),
       hnn_crust_algorithm(),
       fit_connect_algorithm(),
       stretch_denoise_algorithm(),
@@ -45,6 +53,8 @@ std::span<const Algorithm> registry() {
       gathang_algorithm(),
       optimal_transport_algorithm(),
       peel_algorithm(),
+      discur_algorithm(),
+      vicur_algorithm(),
   };
   return algorithms;
 }

@@ -80,12 +80,12 @@ inline Sampled_case sampled_fourier_curves(std::uint64_t seed, int components, i
   return result;
 }
 
-// Random cases whose measured epsilon is below `bound`: one to three components of 2 to 8
+// Random cases whose measured epsilon is below `bound`: one to `max_components` components of 2 to 8
 // harmonics, requested epsilon in [bound / 4, 0.99 bound].
-inline rc::Gen<Sampled_case> safely_sampled_smooth_curves(double bound) {
-  return rc::gen::exec([bound] {
+inline rc::Gen<Sampled_case> safely_sampled_smooth_curves(double bound, int max_components = 3) {
+  return rc::gen::exec([bound, max_components] {
     const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
-    const int components = *rc::gen::inRange(1, 4);
+    const int components = *rc::gen::inRange(1, max_components + 1);
     const int harmonics = *rc::gen::inRange(2, 9);
     const double epsilon = bound * (0.25 + 0.74 * *rc::gen::inRange(0, 1001) / 1000.0);
     Sampled_case result = sampled_fourier_curves(seed, components, harmonics, epsilon);

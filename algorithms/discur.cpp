@@ -1,0 +1,244 @@
+#include "algorithms/discur.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <queue>
+#include <stdexcept>
+
+#include "graphs/delaunay_triangulation.h"
+#include "graphs/exact_length_order.h"
+#include "graphs/proximity_predicates.h"
+
+namespace curvebench::algorithms {
+namespace {
+
+using graphs::Delaunay_triangulation;
+using graphs::no_vertex;
+using graphs::Vertex;
+
+// |ab| <= ratio |cd|, exactly: ratio^2 |cd|^2 - |ab|^2 >= 0 with ratio the given double.
+bool within_ratio(const Point& a, const Point& b, double ratio, const Point& c, const Point& d) {
+  using geometry::difference, geometry::squared_length;
+  return geometry::exact_sign([&]<class NT>(std::type_identity<NT>) {
+           return NT(ratio) * NT(ratio) * squared_length(difference<NT>(d, c)) - squared_length(difference<NT>(b, a));
+         }) != CGAL::NEGATIVE;
+}
+
+// Whether the path ... w -> p turns at p towards q by more than the angle whose cosine is
+// `cosine`: cos(turn) = u.v / (|u||v|) < cosine with u = p - w, v = q - p, squared into a
+// polynomial sign (the sign of u.v decides first).
+bool turns_sharper(const Point& w, const Point& p, const Point& q, double cosine) {
+  using geometry::difference, geometry::dot, geometry::exact_sign, geometry::squared_length;
+  const CGAL::Sign dot_sign =
+      exact_sign([&]<class NT>(std::type_identity<NT>) { return dot(difference<NT>(p, w), difference<NT>(q, p)); });
+  if (cosine == 0) return dot_sign == CGAL::NEGATIVE;
+  // (u.v)^2 against cosine^2 |u|^2 |v|^2.
+  const CGAL::Sign excess = exact_sign([&]<class NT>(std::type_identity<NT>) {
+    const auto u = difference<NT>(p, w), v = difference<NT>(q, p);
+    const NT uv = dot(u, v);
+    return uv * uv - NT(cosine) * NT(cosine) * squared_length(u) * squared_length(v);
+  });
+  if (cosine > 0) return dot_sign != CGAL::POSITIVE || excess == CGAL::NEGATIVE;
+  return dot_sign == CGAL::NEGATIVE && excess == CGAL::POSITIVE;
+}
+
+// Each point's k nearest Delaunay neighbours (exact, ties to the smaller index), padded
+// with no_vertex. The nearest neighbours of a point are among its Delaunay neighbours.
+std::vector<Vertex> nearest_ranks(const Delaunay_triangulation& dt, std::size_t k) {
+  std::vector<Vertex> ranked(dt.size() * k, no_vertex), scratch;
+  for (Vertex v = 0; v < dt.size(); ++v) {
+    const auto neighbors = dt.neighbors(v);
+    scratch.assign(neighbors.begin(), neighbors.end());
+    const std::size_t kept = std::min(k, scratch.size());
+    std::partial_sort(scratch.begin(), scratch.begin() + kept, scratch.end(), [&](Vertex a, Vertex b) {
+      return graphs::closer(dt.point(v), dt.point(a), a, dt.point(b), b);
+    });
+    std::copy_n(scratch.begin(), kept, ranked.begin() + v * k);
+  }
+  return ranked;
+}
+
+// The growing curves: each point's up to two links, and per path (a union-find root)
+// its ends, its size and its longest edge.
+class Paths {
+ public:
+  explicit Paths(std::size_t n) : links_(n, {no_vertex, no_vertex}), parent_(n), size_(n, 1), ends_(n), longest_(n) {
+    for (Vertex v = 0; v < n; ++v) {
+      parent_[v] = v;
+      ends_[v] = {v, v};
+      longest_[v] = {no_vertex, no_vertex};
+    }
+  }
+
+  int degree(Vertex v) const { return (links_[v][0] != no_vertex) + (links_[v][1] != no_vertex); }
+  Vertex end_neighbor(Vertex v) const { return links_[v][0]; }  // the one link of a degree-1 point
+  Vertex find(Vertex v) {
+    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+    return v;
+  }
+  std::size_t size(Vertex root) const { return size_[root]; }
+  const std::array<Vertex, 2>& ends(Vertex root) const { return ends_[root]; }
+  const std::array<Vertex, 2>& longest(Vertex root) const { return longest_[root]; }  // no_vertex if none
+
+  // Links a and b, which are ends of different paths or of the same one (closing it);
+  // `longer` says whether edge ab is longer than an edge given as two points. Returns
+  // the root of the merged path.
+  template <class Longer>
+  Vertex link(Vertex a, Vertex b, const Longer& longer) {
+    links_[a][degree(a)] = b;
+    links_[b][degree(b)] = a;
+    const Vertex ra = find(a), rb = find(b);
+    std::array<Vertex, 2> longest = longest_[ra];
+    if (longest[0] == no_vertex || (longest_[rb][0] != no_vertex && longer(longest_[rb], longest))) longest = longest_[rb];
+    if (longest[0] == no_vertex || longer(std::array<Vertex, 2>{a, b}, longest)) longest = {a, b};
+    if (ra == rb) {  // a cycle: no ends left
+      longest_[ra] = longest;
+      ends_[ra] = {no_vertex, no_vertex};
+      return ra;
+    }
+    const Vertex other_a = ends_[ra][0] == a ? ends_[ra][1] : ends_[ra][0];
+    const Vertex other_b = ends_[rb][0] == b ? ends_[rb][1] : ends_[rb][0];
+    const auto [root, child] = size_[ra] >= size_[rb] ? std::pair{ra, rb} : std::pair{rb, ra};
+    parent_[child] = root;
+    size_[root] += size_[child];
+    ends_[root] = {other_a, other_b};
+    longest_[root] = longest;
+    return root;
+  }
+
+ private:
+  std::vector<std::array<Vertex, 2>> links_;
+  std::vector<Vertex> parent_, size_;
+  std::vector<std::array<Vertex, 2>> ends_, longest_;
+};
+
+void check(const Curve_growth_rules& rules) {
+  const auto positive = [](double x) { return std::isfinite(x) && x > 0; };
+  if (!positive(rules.proximity_ratio) || rules.closing_rank < 1 || rules.closing_rank > 64 ||
+      !(rules.turning_angle_degrees >= 0 && rules.turning_angle_degrees <= 180) ||
+      (rules.turning_angle_degrees < 180 && !positive(rules.corner_ratio)))
+    throw std::invalid_argument("grow_curves: rule out of range");
+}
+
+}  // namespace
+
+std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_rules& rules) {
+  check(rules);
+  const Delaunay_triangulation dt(points);
+  const std::size_t n = dt.size(), k = static_cast<std::size_t>(rules.closing_rank);
+  const std::vector<Vertex> ranked = nearest_ranks(dt, k);
+  const auto among_nearest = [&](Vertex v, Vertex w) {
+    return std::find(ranked.begin() + v * k, ranked.begin() + (v + 1) * k, w) != ranked.begin() + (v + 1) * k;
+  };
+
+  std::vector<graphs::Edge_with_length> sorted = graphs::with_lengths(dt.points(), dt.edges());
+  graphs::sort_by_exact_length(dt.points(), sorted);
+  const auto& at = [&](Vertex v) -> const Point& { return dt.point(v); };
+  const auto longer = [&](const std::array<Vertex, 2>& e, const std::array<Vertex, 2>& f) {
+    return graphs::compare_lengths(at(f[0]), at(f[1]), at(e[0]), at(e[1])) == CGAL::POSITIVE;
+  };
+
+  // A turn sharper than the rule's angle; its cosine is the double nearest cos(angle),
+  // exactly 0 at 90 degrees.
+  const bool continuity = rules.turning_angle_degrees < 180;
+  const double cosine = rules.turning_angle_degrees == 90 ? 0.0 : std::cos(rules.turning_angle_degrees * std::numbers::pi / 180);
+
+  Paths paths(n);
+  // The criterion at end p of a path for the new edge pq: continuation (VICUR) only; the
+  // proximity part is tested once for both ends.
+  const auto continues = [&](Vertex p, Vertex q) {
+    if (!continuity || paths.degree(p) != 1) return true;
+    const Vertex w = paths.end_neighbor(p);
+    return !turns_sharper(at(w), at(p), at(q), cosine) || within_ratio(at(p), at(q), rules.corner_ratio, at(w), at(p));
+  };
+  const auto near_enough = [&](Vertex p, Vertex q, Vertex root) {
+    const auto& l = paths.longest(root);
+    return l[0] != no_vertex && within_ratio(at(p), at(q), rules.proximity_ratio, at(l[0]), at(l[1]));
+  };
+  const auto accepts = [&](Vertex a, Vertex b) {
+    const Vertex ra = paths.find(a), rb = paths.find(b);
+    if (ra == rb) {  // closing a path into a cycle
+      return paths.size(ra) >= 4 && among_nearest(a, b) && among_nearest(b, a) && near_enough(a, b, ra) &&
+             continues(a, b) && continues(b, a);
+    }
+    if (paths.degree(a) == 0 && paths.degree(b) == 0) return true;  // nearest free points join
+    return (near_enough(a, b, ra) || near_enough(a, b, rb)) && continues(a, b) && continues(b, a);
+  };
+
+  // Rejected edges wait at both ends, in intrusive lists of edge slots (2 e + side).
+  std::vector<std::uint32_t> pending_head(n, no_vertex), pending_next(2 * sorted.size(), no_vertex);
+  std::vector<bool> waiting(2 * sorted.size(), false);
+  const auto wait = [&](std::uint32_t e) {
+    for (const std::uint32_t side : {0u, 1u}) {
+      const std::uint32_t slot = 2 * e + side;
+      if (waiting[slot]) continue;
+      const Vertex v = side == 0 ? sorted[e].source : sorted[e].target;
+      waiting[slot] = true;
+      pending_next[slot] = pending_head[v];
+      pending_head[v] = slot;
+    }
+  };
+  // Retried edges are shorter than every edge not yet taken, so they go first.
+  std::priority_queue<std::uint32_t, std::vector<std::uint32_t>, std::greater<>> retry;
+  const auto wake = [&](Vertex v) {
+    for (std::uint32_t slot = pending_head[v]; slot != no_vertex; slot = pending_next[slot]) {
+      waiting[slot] = false;
+      retry.push(slot / 2);
+    }
+    pending_head[v] = no_vertex;
+  };
+
+  std::vector<Edge> edges;
+  std::vector<bool> taken(sorted.size(), false);
+  for (std::uint32_t next = 0; next < sorted.size() || !retry.empty();) {
+    std::uint32_t e;
+    if (!retry.empty()) {
+      e = retry.top();
+      retry.pop();
+    } else {
+      e = next++;
+    }
+    const Vertex a = sorted[e].source, b = sorted[e].target;
+    if (taken[e] || paths.degree(a) == 2 || paths.degree(b) == 2) continue;
+    if (!accepts(a, b)) {
+      wait(e);
+      continue;
+    }
+    taken[e] = true;
+    edges.emplace_back(a, b);
+    const auto old_a = paths.longest(paths.find(a)), old_b = paths.longest(paths.find(b));
+    const Vertex root = paths.link(a, b, longer);
+    // An end whose path got a longer longest edge may now accept what it rejected. The
+    // merged path's ends are (the far end of a's path, the far end of b's path).
+    const auto [end_a, end_b] = paths.ends(root);
+    if (end_a != no_vertex && paths.longest(root) != old_a) wake(end_a);
+    if (end_b != no_vertex && paths.longest(root) != old_b) wake(end_b);
+  }
+  return geometry::canonical_edges(std::move(edges));
+}
+
+std::vector<Edge> discur_reconstruction(std::span<const Point> points) { return grow_curves(points, {}); }
+
+Algorithm discur_algorithm() {
+  return {
+      .name = "discur",
+      .title = "DISCUR",
+      .reference = "Zeng, Nguyen, Yan, Li 2008",
+      .category = "HVS Based",
+      .parameters = {},
+      .capabilities = {.non_uniform = Support::yes, .manifold = Support::yes, .open = Support::yes,
+                       .multiple = Support::yes, .sharp = Support::yes, .guarantee = true,
+                       .time_complexity = "O(n log n)"},
+      // The survey's table: a condition stated through the paper's vision function, with
+      // no epsilon bound.
+      .condition = {.statement = "vision function"},
+      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
+        return Reconstruction{discur_reconstruction(points), {}};
+      },
+  };
+}
+
+}  // namespace curvebench::algorithms
