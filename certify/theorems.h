@@ -14,6 +14,7 @@ namespace curvebench::certify {
 struct Theorem {
   const algorithms::Algorithm* algorithm = nullptr;
   double epsilon_below = 0;  // the hypothesis: measured epsilon < epsilon_below
+  std::optional<double> uniformity_below = {};  // and, if set, local uniformity u < this
 };
 
 // The registry's algorithms with an epsilon bound, in registry order.
@@ -36,8 +37,9 @@ enum class Verdict {
 
 std::string_view verdict_name(Verdict verdict);
 
-// The verdict on one case: its measured epsilon (infinite near an unsampled sharp point)
-// and whether the algorithm reconstructed it exactly.
-Verdict classify(const Theorem& theorem, double measured_epsilon, bool exact);
+// The verdict on one case: its measured epsilon (infinite near an unsampled sharp point),
+// whether the algorithm reconstructed it exactly, and its local uniformity over the
+// ground truth (certify/sampling_measure.h; only read if the theorem bounds it).
+Verdict classify(const Theorem& theorem, double measured_epsilon, bool exact, double measured_uniformity = 1);
 
 }  // namespace curvebench::certify

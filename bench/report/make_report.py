@@ -81,7 +81,7 @@ def ordered(values):
     return list(dict.fromkeys(values))
 
 
-COLUMNS = ("job suite input level algorithm params n_points epsilon rho status exact hausdorff rms normal_deviation "
+COLUMNS = ("job suite input level algorithm params n_points epsilon rho uniformity status exact hausdorff rms normal_deviation "
            "manifold components open_components closed_components unconnected runtime_ms picture message").split()
 
 

@@ -154,6 +154,7 @@ std::vector<Bench_input> make_bench_inputs(std::span<const std::string> names) {
     if (!settings.contains("noise") && !settings.contains("lfs-noise") && !settings.contains("outliers")) {
       input.epsilon = certify::measure_epsilon(lfs, sample.points, 0).epsilon;
       input.rho = certify::measure_rho(lfs, sample, 0).rho;
+      input.uniformity = certify::measure_uniformity(sample.points, sample.edges).uniformity;
     }
     input.points = std::move(sample.points);
     inputs.push_back(std::move(input));

@@ -54,8 +54,9 @@ struct Bench_input {
   std::optional<std::vector<Edge>> truth;  // canonical, over `points`; none for a point file
   std::shared_ptr<const Polyline> curve;   // null for a point file
   // The sampling's measured epsilon and rho (certify/sampling_measure.h, true lfs, no
-  // floor: infinite near a sharp point), for a curve sample without noise or outliers.
-  std::optional<double> epsilon = {}, rho = {};
+  // floor: infinite near a sharp point) and its local uniformity over the ground truth,
+  // for a curve sample without noise or outliers.
+  std::optional<double> epsilon = {}, rho = {}, uniformity = {};
 };
 
 // Inputs named `names`, all of one source (the part before the first '|'), which is read

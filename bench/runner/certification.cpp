@@ -28,8 +28,9 @@ std::string fourier_source(std::uint64_t seed, int harmonics, int components = 1
 
 // The verdict of one finished row.
 Verdict verdict_of(const certify::Theorem& theorem, const Result_row& row) {
-  const double epsilon = row[Column::epsilon].empty() ? INFINITY : std::stod(row[Column::epsilon]);
-  return certify::classify(theorem, epsilon, row[Column::status] == "ok" && row[Column::exact] == "1");
+  const auto measured = [&row](Column column) { return row[column].empty() ? INFINITY : std::stod(row[column]); };
+  return certify::classify(theorem, measured(Column::epsilon), row[Column::status] == "ok" && row[Column::exact] == "1",
+                           measured(Column::uniformity));
 }
 
 // Runs `algorithm` on one input in a scratch directory: its row.

@@ -13,7 +13,7 @@ namespace {
 
 constexpr std::string_view names[column_count] = {
     "job",        "suite",      "input",           "level",           "algorithm",       "params",
-    "n_points",   "epsilon",    "rho",             "status",          "exact",           "hausdorff",
+    "n_points",   "epsilon",    "rho",             "uniformity",      "status",          "exact",           "hausdorff",
     "rms",        "normal_deviation", "manifold", "components",      "open_components", "closed_components",
     "unconnected", "runtime_ms", "picture",        "message"};
 
@@ -24,7 +24,7 @@ Kind kind_of(std::size_t column) {
     case Column::job: case Column::n_points: case Column::components: case Column::open_components:
     case Column::closed_components: case Column::unconnected:
       return Kind::integer;
-    case Column::epsilon: case Column::rho: case Column::hausdorff: case Column::rms: case Column::normal_deviation:
+    case Column::epsilon: case Column::rho: case Column::uniformity: case Column::hausdorff: case Column::rms: case Column::normal_deviation:
     case Column::runtime_ms:
       return Kind::real;
     case Column::exact: case Column::manifold:

@@ -106,6 +106,7 @@ Result_row input_row(const Job& job, const Suite_case& c, const Bench_input& inp
   row[Column::n_points] = std::to_string(input.points.size());
   if (input.epsilon) row[Column::epsilon] = format_number(*input.epsilon);
   if (input.rho) row[Column::rho] = format_number(*input.rho);
+  if (input.uniformity) row[Column::uniformity] = format_number(*input.uniformity);
   return row;
 }
 

@@ -2,7 +2,8 @@
 // a proven epsilon bound reconstructs exactly (edge set = ground truth) every smooth
 // closed curve, one to three components (one for an algorithm that returns a single
 // curve, as Connect2D), safe-sampled at a measured epsilon below that bound
-// (tests/support/reconstruction_cases.h). A failure here is a finding about the
+// (tests/support/reconstruction_cases.h), and of local uniformity below its bound if the
+// condition has one (Connect2D). A failure here is a finding about the
 // sampler, the lfs estimate or the algorithm, never a reason to loosen the bound.
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "algorithms/registry.h"
+#include "certify/sampling_measure.h"
 #include "tests/support/reconstruction_cases.h"
 
 namespace curvebench::algorithms {
@@ -31,6 +33,8 @@ TEST_P(Proven_condition, ReconstructsEverySafelySampledSmoothCurveExactly) {
   const bool passed = rc::check(algorithm.title.data(), [&] {
     const int components = algorithm.capabilities.multiple == Support::no ? 1 : 3;
     const testing::Sampled_case input = *testing::safely_sampled_smooth_curves(bound, components);
+    if (const auto u_bound = algorithm.condition.uniformity_below)
+      RC_PRE(certify::measure_uniformity(input.sample.points, input.truth).uniformity < *u_bound);
     RC_TAG(input.curve.components.size());
     const Reconstruction result = reconstruct(algorithm, input.sample.points);
     RC_ASSERT(result.edges == input.truth);

@@ -25,7 +25,10 @@ using certify::Verdict;
 TEST(Theorems, ComeFromTheRegistryWithTheirBounds) {
   const std::vector<certify::Theorem> all = certify::theorems();
   ASSERT_FALSE(all.empty());
-  for (const certify::Theorem& t : all) EXPECT_EQ(t.epsilon_below, *t.algorithm->condition.epsilon_below);
+  for (const certify::Theorem& t : all) {
+    EXPECT_EQ(t.epsilon_below, *t.algorithm->condition.epsilon_below);
+    EXPECT_EQ(t.uniformity_below, t.algorithm->condition.uniformity_below);
+  }
   const auto nn = certify::theorem_of(*algorithms::find_algorithm("nn-crust"));
   ASSERT_TRUE(nn);
   EXPECT_EQ(nn->epsilon_below, 1.0 / 3);
@@ -39,6 +42,12 @@ TEST(Theorems, VerdictsSeparateTheHypothesisFromTheAlgorithm) {
   EXPECT_EQ(certify::classify(t, 0.2999, false), Verdict::inconclusive);  // within 1e-3 of the bound
   EXPECT_EQ(certify::classify(t, 0.3, false), Verdict::hypothesis_violation);
   EXPECT_EQ(certify::classify(t, INFINITY, true), Verdict::hypothesis_violation);
+  // A uniformity bound (Connect2D's u < 1.609) is a second hypothesis; without one, u is not read.
+  const certify::Theorem uniform{t.algorithm, 0.5, 1.609};
+  EXPECT_EQ(certify::classify(uniform, 0.4, false, 1.5), Verdict::failure);
+  EXPECT_EQ(certify::classify(uniform, 0.4, false, 15.4), Verdict::hypothesis_violation);
+  EXPECT_EQ(certify::classify(uniform, 0.4, true, INFINITY), Verdict::hypothesis_violation);
+  EXPECT_EQ(certify::classify(t, 0.2, false, 15.4), Verdict::failure);
 }
 
 Certify_options small_run(const std::filesystem::path& output, std::size_t count) {
