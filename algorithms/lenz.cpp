@@ -131,7 +131,8 @@ Algorithm lenz_algorithm() {
   static const Parameter alpha{.name = "alpha", .default_value = 40, .minimum = 1, .maximum = 89,
                                .meaning = "half-angle (degrees) of the probe cone about the last edge; a turn "
                                           "wider than alpha ends the trace (a sharp corner)"};
-  static const Parameter k{.name = "k", .type = Parameter_type::integer, .default_value = 8, .minimum = 1,
+  // k = 1 is the function's, not the registry's: the single nearest point is often behind.
+  static const Parameter k{.name = "k", .type = Parameter_type::integer, .default_value = 8, .minimum = 2,
                            .maximum = 64, .meaning = "the probe sees each end's k nearest points"};
   return {
       .name = "lenz",

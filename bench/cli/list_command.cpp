@@ -44,7 +44,7 @@ void list_algorithms() {
     for (const algorithms::Parameter& p : a.parameters) {
       std::ostringstream range;
       range << p.default_value << " in [" << p.minimum << ", " << p.maximum << ']';
-      std::cout << "    " << std::setw(10) << p.name << std::setw(28) << range.str() << p.meaning << '\n';
+      std::cout << "    " << std::setw(17) << p.name << std::setw(28) << range.str() << p.meaning << '\n';
     }
   }
 }
