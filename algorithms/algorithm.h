@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/parameters.h"
@@ -55,6 +56,18 @@ struct Sampling_condition {
 // Reconstructs from distinct points (the registry's reconstruct() merges duplicates
 // first), with checked parameter values.
 using Reconstruct = std::function<Reconstruction(std::span<const Point>, const Parameter_values&)>;
+
+// The registry's call for an algorithm whose result is edges on its input points:
+// `f(points)` for one without parameters, `f(points, values)` for one with.
+template <class F>
+Reconstruct edges_on_input(F f) {
+  return [f](std::span<const Point> points, const Parameter_values& values) {
+    if constexpr (std::is_invocable_v<const F&, std::span<const Point>>)
+      return Reconstruction{f(points), {}};
+    else
+      return Reconstruction{f(points, values), {}};
+  };
+}
 
 struct Algorithm {
   std::string_view name;       // as typed on the command line: "nn-crust"

@@ -24,10 +24,10 @@ Algorithm alpha_shape_algorithm() {
       // Proven for uniform samplings whose spacing is small against the curve's reach
       // (Bernardini, Bajaj 1997); no epsilon bound.
       .condition = {.statement = "uniform sampling denser than alpha"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
         const double value = values[alpha];
-        return Reconstruction{alpha_shape_reconstruction(points, value > 0 ? std::optional(value) : std::nullopt), {}};
-      },
+        return alpha_shape_reconstruction(points, value > 0 ? std::optional(value) : std::nullopt);
+      }),
   };
 }
 

@@ -20,9 +20,9 @@ Algorithm beta_skeleton_algorithm() {
       .capabilities = {.non_uniform = Support::yes, .multiple = Support::yes, .sharp = Support::yes,
                        .time_complexity = "O(n log n)"},
       .condition = {.statement = "none"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return Reconstruction{beta_skeleton_reconstruction(points, values[beta]), {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return beta_skeleton_reconstruction(points, values[beta]);
+      }),
   };
 }
 

@@ -282,9 +282,7 @@ Algorithm connect2d_algorithm() {
                        .manifold = Support::yes, .open = Support::no, .multiple = Support::no,
                        .sharp = Support::yes, .guarantee = true, .time_complexity = "O(n log n)"},
       .condition = {.statement = "epsilon < 1/2, u < 1.609", .epsilon_below = 0.5, .uniformity_below = 1.609},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{connect2d_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(connect2d_reconstruction),
   };
 }
 

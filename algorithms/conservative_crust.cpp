@@ -68,9 +68,9 @@ Algorithm conservative_crust_algorithm() {
                        .multiple = Support::yes, .guarantee = true, .time_complexity = "O(n log n)"},
       .condition = {.statement = "epsilon < 0.0625", .epsilon_below = 0.0625, .rho_below = {},
                     .corner_angle_above = {}},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return Reconstruction{conservative_crust_reconstruction(points, values[rho]), {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return conservative_crust_reconstruction(points, values[rho]);
+      }),
   };
 }
 

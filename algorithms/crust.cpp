@@ -305,9 +305,7 @@ Algorithm crust_algorithm() {
                        .guarantee = true, .time_complexity = "O(n log n)"},
       .condition = {.statement = "epsilon < 0.252", .epsilon_below = 0.252, .rho_below = {},
                     .corner_angle_above = {}},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{crust_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(crust_reconstruction),
   };
 }
 

@@ -235,9 +235,7 @@ Algorithm discur_algorithm() {
       // The survey's table: a condition stated through the paper's vision function, with
       // no epsilon bound.
       .condition = {.statement = "vision function"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{discur_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(discur_reconstruction),
   };
 }
 

@@ -20,9 +20,7 @@ Algorithm emst_algorithm() {
       // Proven for open curves sampled densely in an empty tubular neighbourhood; the
       // survey gives no epsilon for it.
       .condition = {.statement = "dense uniform sampling of an open curve"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{emst_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(emst_reconstruction),
   };
 }
 

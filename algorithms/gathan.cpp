@@ -290,9 +290,9 @@ Algorithm gathan_algorithm() {
       .capabilities = {.non_uniform = Support::yes, .open = Support::yes, .multiple = Support::yes,
                        .sharp = Support::yes, .time_complexity = "O(n log n)"},
       .condition = {.statement = "none"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return Reconstruction{gathan_reconstruction(points, values[theta]), {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return gathan_reconstruction(points, values[theta]);
+      }),
   };
 }
 

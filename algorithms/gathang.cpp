@@ -132,9 +132,9 @@ Algorithm gathang_algorithm() {
       .condition = {.statement = "epsilon < 0.5, corner angle > 150 degrees",
                     .epsilon_below = 0.5,
                     .corner_angle_above = 150},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return Reconstruction{gathang_reconstruction(points, values[alpha]), {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return gathang_reconstruction(points, values[alpha]);
+      }),
   };
 }
 

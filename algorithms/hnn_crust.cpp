@@ -37,9 +37,7 @@ Algorithm hnn_crust_algorithm() {
                        .multiple = Support::yes, .guarantee = true, .time_complexity = "O(n log n)"},
       .condition = {.statement = "epsilon < 0.47 (rho < 0.9)", .epsilon_below = 0.47, .rho_below = 0.9,
                     .corner_angle_above = {}},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{hnn_crust_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(hnn_crust_reconstruction),
   };
 }
 

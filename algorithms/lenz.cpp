@@ -145,9 +145,9 @@ Algorithm lenz_algorithm() {
                        .time_complexity = "O(n log n)"},
       // The survey's table; the paper claims this without proof, so no bound is registered.
       .condition = {.statement = "epsilon < 0.48 (no proof)"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return Reconstruction{lenz_reconstruction(points, values[alpha], static_cast<std::size_t>(values[k])), {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return lenz_reconstruction(points, values[alpha], static_cast<std::size_t>(values[k]));
+      }),
   };
 }
 

@@ -450,9 +450,7 @@ Algorithm nn_crust_algorithm() {
       .capabilities = {.non_uniform = Support::yes, .manifold = Support::yes, .open = Support::yes,
                        .multiple = Support::yes, .guarantee = true, .time_complexity = "O(n log n)"},
       .condition = {.statement = "epsilon < 1/3", .epsilon_below = 1.0 / 3, .rho_below = {}, .corner_angle_above = {}},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{nn_crust_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(nn_crust_reconstruction),
   };
 }
 

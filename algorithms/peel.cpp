@@ -182,9 +182,9 @@ Algorithm peel_algorithm() {
                        .manifold = Support::no, .open = Support::yes, .multiple = Support::yes,
                        .sharp = Support::no, .guarantee = true, .time_complexity = "O(n^2)"},
       .condition = {.statement = "none"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return Reconstruction{peel_reconstruction(points, values[reach]), {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return peel_reconstruction(points, values[reach]);
+      }),
   };
 }
 

@@ -138,9 +138,7 @@ Algorithm shape_hull_algorithm() {
       .capabilities = {.non_uniform = Support::yes, .manifold = Support::yes, .sharp = Support::yes,
                        .time_complexity = "O(n log n)"},
       .condition = {.statement = "none"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{shape_hull_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(shape_hull_reconstruction),
   };
 }
 

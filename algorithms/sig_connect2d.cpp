@@ -123,9 +123,7 @@ Algorithm sig_connect2d_algorithm() {
                        .sharp = Support::yes, .time_complexity = "O(n log n)"},
       .condition = {.statement = "none for this extraction (the paper proves SIGDT contains the curve under "
                                  "its own sampling condition)"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{sig_connect2d_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(sig_connect2d_reconstruction),
   };
 }
 

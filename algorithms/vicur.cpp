@@ -35,11 +35,10 @@ Algorithm vicur_algorithm() {
                        .multiple = Support::yes, .sharp = Support::yes, .guarantee = false,
                        .time_complexity = "O(n log n)"},
       .condition = {.statement = "none"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return Reconstruction{vicur_reconstruction(points, values[proximity_ratio], values[turning_angle],
-                                                   values[corner_ratio], static_cast<int>(values[closing_rank])),
-                              {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return vicur_reconstruction(points, values[proximity_ratio], values[turning_angle], values[corner_ratio],
+                                    static_cast<int>(values[closing_rank]));
+      }),
   };
 }
 

@@ -381,9 +381,7 @@ Algorithm voronoi_labeling_algorithm() {
       // (a variant of divergent concavity; survey, "Graph Based"); the survey gives no
       // epsilon bound for it.
       .condition = {.statement = "bi-tangent neighbourhood convergence"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{voronoi_labeling_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input(voronoi_labeling_reconstruction),
   };
 }
 

@@ -5,12 +5,12 @@
 #include <stdexcept>
 
 #include "certify/sampling_measure.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/curve_name.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
-#include "geometry/seeded_random.h"
-#include "geometry/svg_picture.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/curves/curve_name.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
+#include "geometry/sampling/seeded_random.h"
+#include "geometry/io/svg_picture.h"
 
 namespace curvebench::certify {
 namespace {

@@ -35,11 +35,11 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/cubic_bezier.h"
-#include "geometry/curve.h"
-#include "geometry/curve_location.h"
+#include "geometry/curves/cubic_bezier.h"
+#include "geometry/curves/curve.h"
+#include "geometry/curves/curve_location.h"
 #include "geometry/edge.h"
-#include "geometry/local_feature_size.h"
+#include "geometry/lfs/local_feature_size.h"
 
 namespace curvebench::certify {
 
@@ -94,7 +94,7 @@ struct Ambiguity_measure {
 // Builds both curves' Local_feature_size at `density` and measures S against each with
 // measure_epsilon(lfs, S, 0), the project's unfloored epsilon. A curve is smooth and simple
 // iff its lfs estimate found no sharp point (no corner from a cusp, no crossing from
-// geometry/curve_crossings.h).
+// geometry/curves/curve_crossings.h).
 Ambiguity_measure measure_ambiguity(const Ambiguity_case& c,
                                     double density = geometry::Local_feature_size::default_density);
 

@@ -4,8 +4,8 @@
 #include <limits>
 #include <vector>
 
-#include "geometry/curve_search.h"
-#include "geometry/nearest_point_index.h"
+#include "geometry/lfs/curve_search.h"
+#include "geometry/lfs/nearest_point_index.h"
 
 namespace curvebench::certify {
 namespace {

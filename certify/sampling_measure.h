@@ -10,10 +10,10 @@
 
 #include <span>
 
-#include "geometry/curve_location.h"
+#include "geometry/curves/curve_location.h"
 #include "geometry/edge.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sample.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sample.h"
 
 namespace curvebench::certify {
 
@@ -39,7 +39,7 @@ struct Rho_measure {
   Curve_location where;  // where that reach is attained
 };
 
-// HNN-Crust's rho (see geometry/sampling.h): over the sample's edges between curve points
+// HNN-Crust's rho (see geometry/sampling/sampling.h): over the sample's edges between curve points
 // of one component; an edge (i, j) stands for the interval from i's location forward
 // along the curve to j's (Sample's orientation).
 Rho_measure measure_rho(const geometry::Local_feature_size& lfs, const geometry::Sample& sample, double minimum_lfs);

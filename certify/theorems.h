@@ -23,7 +23,7 @@ std::vector<Theorem> theorems();
 // std::nullopt if its condition has no epsilon bound.
 std::optional<Theorem> theorem_of(const algorithms::Algorithm& algorithm);
 
-// lfs is estimated from a dense sample of the medial axis (geometry/local_feature_size.h)
+// lfs is estimated from a dense sample of the medial axis (geometry/lfs/local_feature_size.h)
 // and over-estimates the true lfs by a relative 2e-4 at most on the curves measured
 // there; a measured epsilon is therefore trusted to this relative margin, with room.
 inline constexpr double epsilon_relative_error = 1e-3;

@@ -1,4 +1,4 @@
-// libFuzzer target for the benchmark's metrics (geometry/curve_distance.h,
+// libFuzzer target for the benchmark's metrics (geometry/metrics/curve_distance.h,
 // nearest_segment_index.h, curve_topology.h) on degenerate edge chains: coincident,
 // collinear and one-ulp-apart points, zero-length edges, scales from 2^-1000 to 1e300
 // (degenerate_point_program.h). Laws: the nearest segment is the closest of all (brute
@@ -16,10 +16,10 @@
 
 #include "fuzz/degenerate_point_program.h"
 #include "fuzz/fuzz_target.h"
-#include "geometry/curve_distance.h"
-#include "geometry/curve_topology.h"
-#include "geometry/nearest_segment_index.h"
-#include "geometry/point_io.h"
+#include "geometry/metrics/curve_distance.h"
+#include "geometry/metrics/curve_topology.h"
+#include "geometry/metrics/nearest_segment_index.h"
+#include "geometry/io/point_io.h"
 
 namespace curvebench::fuzz {
 namespace {

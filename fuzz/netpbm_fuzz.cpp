@@ -1,4 +1,4 @@
-// libFuzzer target for geometry/binary_image.h and geometry/image_sampling.h (survey,
+// libFuzzer target for geometry/image/binary_image.h and geometry/image/image_sampling.h (survey,
 // "Sampling Tools": the discrete sampling tool). parse_netpbm must turn any bytes into an
 // image or a ParseError, without a crash, undefined behaviour, another exception or an
 // allocation larger than the bytes call for; what it accepts must survive write_pgm and a
@@ -23,8 +23,8 @@
 #include <CGAL/Exact_rational.h>
 
 #include "fuzz/fuzz_target.h"
-#include "geometry/binary_image.h"
-#include "geometry/image_sampling.h"
+#include "geometry/image/binary_image.h"
+#include "geometry/image/image_sampling.h"
 
 namespace curvebench::fuzz {
 namespace {

@@ -1,18 +1,21 @@
-// libFuzzer target for geometry/point_io.h: parse_point_file must turn any bytes into
+// libFuzzer target for geometry/io/point_io.h: parse_point_file must turn any bytes into
 // points or a ParseError, under both naming rules (".xy": the format is guessed from the
 // first data line; ".node": a Triangle header is required), without a crash, undefined
 // behaviour, another exception or an allocation larger than the text calls for. What it
-// accepts must be consistent and survive write_points and a second parse bit for bit.
+// accepts must be consistent and survive write_points and a second parse bit for bit, and a
+// UTF-8 byte-order mark in front of the bytes must change nothing.
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <string_view>
 
 #include "fuzz/fuzz_target.h"
-#include "geometry/point_io.h"
+#include "geometry/io/point_io.h"
 
 namespace curvebench::fuzz {
 namespace {
@@ -26,13 +29,25 @@ bool bit_identical(const Point& p, const Point& q) {
          std::bit_cast<std::uint64_t>(p.y()) == std::bit_cast<std::uint64_t>(q.y());
 }
 
-void check_point_file(std::string_view text, std::string_view name) {
-  geometry::PointFile file;
+std::optional<geometry::PointFile> parsed(std::string_view text, std::string_view name) {
   try {
-    file = geometry::parse_point_file(text, name);
+    return geometry::parse_point_file(text, name);
   } catch (const geometry::ParseError&) {
-    return;  // rejecting malformed bytes with a message is the reader's job
+    return std::nullopt;  // rejecting malformed bytes with a message is the reader's job
   }
+}
+
+void check_point_file(std::string_view text, std::string_view name) {
+  const auto result = parsed(text, name);
+  if (!text.starts_with("\xEF\xBB\xBF")) {
+    const auto marked = parsed("\xEF\xBB\xBF" + std::string(text), name);
+    FUZZ_CHECK(marked.has_value() == result.has_value() &&
+                   (!result || std::equal(result->points.begin(), result->points.end(), marked->points.begin(),
+                                          marked->points.end(), bit_identical)),
+               "a byte-order mark in front changes nothing");
+  }
+  if (!result) return;
+  const geometry::PointFile& file = *result;
   const auto& points = file.points;
   FUZZ_CHECK(file.lines.size() == points.size(), "every point has its source line");
   FUZZ_CHECK(std::adjacent_find(file.lines.begin(), file.lines.end(), std::greater_equal<>()) == file.lines.end() &&

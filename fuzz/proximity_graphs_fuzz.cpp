@@ -20,7 +20,7 @@
 
 #include "fuzz/degenerate_point_program.h"
 #include "fuzz/fuzz_target.h"
-#include "geometry/point_io.h"
+#include "geometry/io/point_io.h"
 #include "geometry/point_set.h"
 #include "graphs/proximity_graph.h"
 

@@ -15,7 +15,7 @@
 #include "algorithms/registry.h"
 #include "fuzz/degenerate_point_program.h"
 #include "fuzz/fuzz_target.h"
-#include "geometry/point_io.h"
+#include "geometry/io/point_io.h"
 
 // CGAL 5.5's optimal-transport reconstruction leaks a few allocations (fixed in CGAL
 // 5.6); LeakSanitizer reads this list in the fuzz build, and nothing else does.

@@ -1,4 +1,4 @@
-// libFuzzer target for geometry/svg_path.h: parse_svg_path must turn any bytes into a
+// libFuzzer target for geometry/curves/svg_path.h: parse_svg_path must turn any bytes into a
 // curve or an Svg_syntax_error (std::invalid_argument naming a position inside the text),
 // without a crash, undefined behaviour or any other exception; in particular the curve
 // model's own std::invalid_argument (pieces that do not join) would be a finding. What it
@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "fuzz/fuzz_target.h"
-#include "geometry/svg_path.h"
+#include "geometry/curves/svg_path.h"
 
 namespace curvebench::fuzz {
 namespace {

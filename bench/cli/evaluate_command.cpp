@@ -7,9 +7,9 @@
 
 #include "bench/runner/bench_input.h"
 #include "bench/runner/evaluation.h"
-#include "geometry/curve_spec.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
 
 namespace curvebench::cli {
 namespace {

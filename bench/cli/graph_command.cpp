@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "bench/cli/input.h"
-#include "geometry/edge_io.h"
+#include "geometry/io/edge_io.h"
 #include "graphs/proximity_graph.h"
 
 namespace curvebench::cli {

@@ -7,10 +7,10 @@
 #include <sstream>
 
 #include "bench/cli/sample_files.h"
-#include "geometry/binary_image.h"
-#include "geometry/curve_spec.h"
-#include "geometry/image_sampling.h"
-#include "geometry/svg_picture.h"
+#include "geometry/image/binary_image.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/image/image_sampling.h"
+#include "geometry/io/svg_picture.h"
 
 namespace curvebench::cli {
 namespace {

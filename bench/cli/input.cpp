@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <iostream>
 
-#include "geometry/point_io.h"
-#include "geometry/svg_picture.h"
+#include "geometry/io/point_io.h"
+#include "geometry/io/svg_picture.h"
 
 namespace curvebench::cli {
 

@@ -7,8 +7,8 @@
 
 #include "bench/cli/sample_files.h"
 #include "certify/sampling_measure.h"
-#include "geometry/curve_spec.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/sampling/sampling.h"
 
 namespace curvebench::cli {
 namespace {

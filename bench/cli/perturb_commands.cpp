@@ -6,10 +6,10 @@
 #include <optional>
 
 #include "bench/cli/sample_files.h"
-#include "geometry/curve_spec.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
-#include "geometry/sampling_noise.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
+#include "geometry/sampling/sampling_noise.h"
 
 namespace curvebench::cli {
 namespace {

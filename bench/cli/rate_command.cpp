@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "algorithms/registry.h"
-#include "geometry/curve_spec.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/sampling/sampling.h"
 
 namespace curvebench::cli {
 namespace {

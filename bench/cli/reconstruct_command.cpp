@@ -9,8 +9,8 @@
 
 #include "algorithms/registry.h"
 #include "bench/cli/input.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
 
 namespace curvebench::cli {
 namespace {

@@ -5,9 +5,9 @@
 #include <optional>
 
 #include "bench/cli/sample_files.h"
-#include "geometry/curve_spec.h"
-#include "geometry/sampling.h"
-#include "geometry/sampling_noise.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/sampling/sampling_noise.h"
 
 namespace curvebench::cli {
 namespace {

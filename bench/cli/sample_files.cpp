@@ -3,10 +3,10 @@
 #include <fstream>
 #include <utility>
 
-#include "geometry/curve_projection.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
-#include "geometry/svg_picture.h"
+#include "geometry/lfs/curve_projection.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
+#include "geometry/io/svg_picture.h"
 
 namespace curvebench::cli {
 namespace {

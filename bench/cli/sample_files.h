@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "geometry/local_feature_size.h"
-#include "geometry/sample.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sample.h"
 
 namespace curvebench::cli {
 

@@ -14,10 +14,10 @@
 
 #include "algorithms/registry.h"
 #include "bench/micro/size_budget.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/point_io.h"
-#include "geometry/sampling.h"
-#include "geometry/sampling_noise.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/io/point_io.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/sampling/sampling_noise.h"
 
 namespace {
 

@@ -13,8 +13,8 @@
 
 #include "algorithms/registry.h"
 #include "bench/micro/size_budget.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/sampling/sampling.h"
 
 namespace {
 

@@ -13,10 +13,10 @@
 #include <benchmark/benchmark.h>
 
 #include "certify/sampling_measure.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/glyph_curves.h"
-#include "geometry/sampling.h"
-#include "geometry/seeded_random.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/curves/glyph_curves.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/sampling/seeded_random.h"
 
 namespace {
 

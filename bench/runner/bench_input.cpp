@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "certify/sampling_measure.h"
-#include "geometry/curve_spec.h"
-#include "geometry/point_io.h"
-#include "geometry/sampling.h"
-#include "geometry/sampling_noise.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/io/point_io.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/sampling/sampling_noise.h"
 
 namespace curvebench::bench {
 namespace {

@@ -4,10 +4,10 @@
 //
 //   SOURCE|KEY=VALUE|KEY=VALUE...
 //
-// SOURCE is a curve spec (geometry/curve_spec.h: `svg:data/svg/simple.svg`, `glyph:g`,
+// SOURCE is a curve spec (geometry/curves/curve_spec.h: `svg:data/svg/simple.svg`, `glyph:g`,
 // `corner:angle=30`, `fourier:seed=3`, ...) or `file:PATH`, a point file without ground
 // truth. A curve takes exactly one sampler key:
-//   epsilon=E     safe epsilon-sampling: measured epsilon <= E (geometry/sampling.h)
+//   epsilon=E     safe epsilon-sampling: measured epsilon <= E (geometry/sampling/sampling.h)
 //   walk=E        the survey's greedy walk at E (measures about E / 2 on smooth curves)
 //   rho=R         HNN-Crust's rho-sampling
 //   uniform=N     N points at equal arc-length steps
@@ -30,10 +30,10 @@
 #include <string_view>
 #include <vector>
 
-#include "geometry/curve_distance.h"
+#include "geometry/metrics/curve_distance.h"
 #include "geometry/edge.h"
 #include "geometry/kernel.h"
-#include "geometry/local_feature_size.h"
+#include "geometry/lfs/local_feature_size.h"
 
 namespace curvebench::bench {
 

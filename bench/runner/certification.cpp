@@ -9,9 +9,9 @@
 #include "bench/runner/bench_input.h"
 #include "bench/runner/results_table.h"
 #include "certify/theorems.h"
-#include "geometry/curve_spec.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
 
 namespace curvebench::bench {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <optional>
 
-#include "geometry/curve_distance.h"
-#include "geometry/curve_topology.h"
+#include "geometry/metrics/curve_distance.h"
+#include "geometry/metrics/curve_topology.h"
 
 namespace curvebench::bench {
 

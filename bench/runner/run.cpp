@@ -23,7 +23,7 @@
 #include "bench/runner/results_table.h"
 #include "bench/runner/suite.h"
 #include "certify/theorems.h"
-#include "geometry/svg_picture.h"
+#include "geometry/io/svg_picture.h"
 
 namespace curvebench::bench {
 namespace {

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "bench/runner/bench_input.h"
-#include "geometry/curve_spec.h"
+#include "geometry/curves/curve_spec.h"
 
 namespace curvebench::bench {
 namespace {

@@ -24,9 +24,9 @@
 
 #include "algorithms/connect2d.h"
 #include "algorithms/registry.h"
-#include "geometry/corner_curve.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/corner_curve.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "graphs/delaunay_graph.h"
 #include "tests/support/brute_force_graphs.h"
 #include "tests/support/edge_sets.h"

@@ -28,9 +28,9 @@
 
 #include "algorithms/crust.h"
 #include "algorithms/registry.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "graphs/gabriel_graph.h"
 #include "tests/support/edge_sets.h"
 #include "tests/support/point_generators.h"

@@ -20,7 +20,9 @@
 #include "graphs/delaunay_graph.h"
 #include "tests/support/brute_force_graphs.h"
 #include "tests/support/edge_sets.h"
+#include "tests/support/hand_made_curves.h"
 #include "tests/support/point_generators.h"
+#include "tests/support/reconstruction_laws.h"
 #include "tests/support/reconstruction_cases.h"
 
 namespace curvebench::algorithms {
@@ -28,6 +30,7 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::degrees;
 
 Rational squared_distance(const Point& a, const Point& b) {
   const Rational dx = Rational(a.x()) - Rational(b.x()), dy = Rational(a.y()) - Rational(b.y());
@@ -105,12 +108,6 @@ Edges brute_grow_curves(const std::vector<Point>& points, const Edges& delaunay,
   return testing::canonical(taken);
 }
 
-std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
-  std::vector<std::size_t> degree(n);
-  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
-  return degree;
-}
-
 RC_GTEST_PROP(Discur, EqualsBruteForceInGeneralPosition, ()) {
   const auto points = *testing::uniform_points(24);
   const Edges strong = testing::strong_delaunay_edges(points);
@@ -134,15 +131,7 @@ RC_GTEST_PROP(Discur, GrowthRulesEqualBruteForceInGeneralPosition, ()) {
 // edges, the same after scaling by a power of two.
 RC_GTEST_PROP(Discur, GivesPathsAndCyclesOfDelaunayEdgesOnAnyInput, ()) {
   const auto points = *testing::point_sets(30);
-  const Edges edges = discur_reconstruction(points);
-  const Edges delaunay = graphs::edge_list(graphs::delaunay_graph(points));
-  RC_ASSERT(std::includes(delaunay.begin(), delaunay.end(), edges.begin(), edges.end()));
-  for (const std::size_t d : degrees(edges, points.size())) RC_ASSERT(d <= 2u);
-  std::vector<Point> scaled;
-  const int exponent = *rc::gen::element(-40, -3, 5, 60);
-  for (const Point& p : points) scaled.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
-  if (std::all_of(scaled.begin(), scaled.end(), [](const Point& p) { return std::isnormal(p.x()) || p.x() == 0; }))
-    RC_ASSERT(discur_reconstruction(scaled) == edges);
+  testing::rc_assert_delaunay_paths_and_cycles([](const auto& p) { return discur_reconstruction(p); }, points);
 }
 
 // The paper's claim: dense (epsilon-, so non-uniform) samplings of smooth closed curves,
@@ -157,19 +146,16 @@ TEST(Discur, ReconstructsDenseSmoothClosedCurves) {
 
 // Two disjoint circles of different spacing: two cycles.
 TEST(Discur, ReconstructsTwoDisjointCircles) {
-  std::vector<Point> points = testing::regular_polygon(60, 1.0);
-  for (const Point& p : testing::regular_polygon(25, 0.5, 0.1)) points.emplace_back(p.x() + 3, p.y());
-  Edges truth = testing::cycle_edges(60);
-  for (const Edge& e : testing::cycle_edges(25, 60)) truth.push_back(e);
-  EXPECT_EQ(discur_reconstruction(points), testing::canonical(truth));
+  const auto circles = testing::two_circles();
+  EXPECT_EQ(discur_reconstruction(circles.points), circles.truth);
 }
 
 // Open curves: one path, both ends of degree one. A sine arc (uniform in x), a circular
 // arc of 300 degrees whose ends are Delaunay neighbours, and an arc whose spacing grows
 // by 5% per step (non-uniform).
 TEST(Discur, ReconstructsOpenCurves) {
-  std::vector<Point> sine, arc, growing;
-  for (int i = 0; i <= 200; ++i) sine.emplace_back(i * 0.03, 0.4 * std::sin(i * 0.03));
+  std::vector<Point> sine = testing::sine_arc().points;
+  std::vector<Point> arc, growing;
   for (int i = 0; i <= 100; ++i) {
     const double t = i * (300.0 / 100) * std::numbers::pi / 180;
     arc.emplace_back(std::cos(t), std::sin(t));
@@ -183,11 +169,8 @@ TEST(Discur, ReconstructsOpenCurves) {
 // Sharp corners, uniformly sampled: a square (90 degrees) and a kite with a 70-degree
 // tip, each side cut into equal steps of about the same length.
 TEST(Discur, ReconstructsSharpCornersSampledUniformly) {
-  const auto square = testing::along({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {16, 16, 16, 16});
-  EXPECT_EQ(discur_reconstruction(square), testing::cycle_edges(square.size()));
-  const double half = std::tan(35 * std::numbers::pi / 180) * 3;  // tip at (0, 0), opening 70 degrees
-  const auto kite = testing::along({{0, 0}, {3, -half}, {4.5, 0}, {3, half}}, {30, 18, 18, 30});
-  EXPECT_EQ(discur_reconstruction(kite), testing::cycle_edges(kite.size()));
+  for (const auto& c : {testing::sampled_square(), testing::sampled_kite()})
+    EXPECT_EQ(discur_reconstruction(c.points), c.truth) << c.name;
 }
 
 TEST(Discur, TinyAndDegenerateInput) {

@@ -18,12 +18,12 @@
 
 #include "algorithms/fit_connect.h"
 #include "algorithms/hnn_crust.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/curve_distance.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
-#include "geometry/sampling_noise.h"
-#include "geometry/seeded_random.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/metrics/curve_distance.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/sampling/sampling_noise.h"
+#include "geometry/sampling/seeded_random.h"
 #include "tests/support/edge_sets.h"
 
 namespace curvebench::algorithms {

@@ -16,9 +16,9 @@
 #include "algorithms/hnn_crust.h"
 #include "algorithms/nn_crust.h"
 #include "algorithms/registry.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "graphs/delaunay_triangulation.h"
 #include "tests/support/brute_force_neighbors.h"
 #include "tests/support/edge_sets.h"
@@ -31,6 +31,7 @@ using Edges = std::vector<Edge>;
 using testing::cycle_edges;
 using testing::path_edges;
 using testing::regular_polygon;
+using testing::degrees;
 
 std::vector<Nearest_and_half_neighbor> brute_neighbors(std::span<const Point> points) {
   return testing::brute_force_nearest_and_half_neighbors(points, Half_plane::beyond_bisector);
@@ -55,12 +56,6 @@ void expect_matches_brute_force(std::span<const Point> points) {
     EXPECT_EQ(found[p].half, expected[p].half) << "point " << p;
   }
   EXPECT_EQ(hnn_crust_reconstruction(points), brute_hnn_crust(points));
-}
-
-std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
-  std::vector<std::size_t> degree(n, 0);
-  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
-  return degree;
 }
 
 // ------------------------------------------------------------ properties

@@ -21,11 +21,12 @@
 
 #include "algorithms/lenz.h"
 #include "algorithms/registry.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/corner_curve.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/curves/corner_curve.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "tests/support/edge_sets.h"
+#include "tests/support/hand_made_curves.h"
 #include "tests/support/point_generators.h"
 #include "tests/support/reconstruction_cases.h"
 
@@ -37,14 +38,9 @@ using Edges = std::vector<Edge>;
 using testing::canonical;
 using testing::cycle_edges;
 using testing::path_edges;
+using testing::degrees;
 
 // ---------------------------------------------------------------- rational brute force
-
-std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
-  std::vector<std::size_t> degree(n, 0);
-  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
-  return degree;
-}
 
 Q squared_distance(const Point& a, const Point& b) {
   const Q dx = Q(a.x()) - Q(b.x()), dy = Q(a.y()) - Q(b.y());
@@ -272,33 +268,15 @@ TEST(Lenz, ReconstructsSharpCorners) {
   std::cout << table.str();
 }
 
-// The lemniscate of Bernoulli (x^2 + y^2)^2 = x^2 - y^2: a figure eight whose branches
-// cross at the origin at right angles (t = pi/2 and 3 pi/2), with an inflection there.
-Point lemniscate(double t) {
-  const double s = std::sin(t), c = std::cos(t), d = 1 + s * s;
-  return {c / d, s * c / d};
-}
-
 TEST(Lenz, TracesThroughTheCrossingOfAFigureEightSampledAtTheCrossing) {
   // n samples evenly in t, both branches sampled at the origin: one point there, of degree
   // 4 in the truth. Each branch reaches it straight, the other branch's points lie 90°
   // off, so the trace goes on through it along its own branch.
   for (const std::size_t n : {200u, 400u, 1000u}) {
-    std::vector<Point> points;
-    std::vector<std::size_t> index(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i == 3 * n / 4) {
-        index[i] = index[n / 4];
-        continue;
-      }
-      index[i] = points.size();
-      points.push_back(i == n / 4 ? Point(0, 0) : lemniscate(2 * std::numbers::pi * double(i) / double(n)));
-    }
-    Edges truth;
-    for (std::size_t i = 0; i < n; ++i) truth.emplace_back(index[i], index[(i + 1) % n]);
-    const Edges edges = lenz_reconstruction(points);
-    EXPECT_EQ(edges, canonical(truth)) << n;
-    EXPECT_EQ(degrees(edges, points.size())[index[n / 4]], 4u) << n;
+    const auto eight = testing::figure_eight_sampled_at_the_crossing(n);
+    const Edges edges = lenz_reconstruction(eight.points);
+    EXPECT_EQ(edges, eight.truth) << n;
+    EXPECT_EQ(degrees(edges, eight.points.size())[eight.crossing], 4u) << n;
   }
 }
 
@@ -306,9 +284,8 @@ TEST(Lenz, ReconstructsTheCrossingEdgesOfAFigureEightSampledBetween) {
   // Samples at t = 2 pi (i + 1/2) / n: the crossing lies midway between two samples on
   // each branch, whose edges cross. The other branch's points lie about 45° off the probe.
   for (const std::size_t n : {200u, 400u, 1000u}) {
-    std::vector<Point> points;
-    for (std::size_t i = 0; i < n; ++i) points.push_back(lemniscate(2 * std::numbers::pi * (double(i) + 0.5) / double(n)));
-    EXPECT_EQ(lenz_reconstruction(points), cycle_edges(n)) << n;
+    const auto eight = testing::figure_eight_sampled_between(n);
+    EXPECT_EQ(lenz_reconstruction(eight.points), eight.truth) << n;
   }
 }
 

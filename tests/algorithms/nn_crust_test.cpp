@@ -15,9 +15,9 @@
 
 #include "algorithms/nn_crust.h"
 #include "algorithms/registry.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "graphs/delaunay_triangulation.h"
 #include "tests/support/brute_force_neighbors.h"
 #include "tests/support/edge_sets.h"

@@ -62,7 +62,7 @@ std::vector<Point> circle(std::size_t n, double radius = 1, double warp = 0) {
 }
 
 // Points at least `clearance` from the unit circle, uniform in its bounding box as the
-// survey's outliers are (geometry/sampling_noise.h); nearer ones are noise, not outliers.
+// survey's outliers are (geometry/sampling/sampling_noise.h); nearer ones are noise, not outliers.
 std::vector<Point> far_outliers(std::size_t count, double clearance, std::uint64_t seed) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> anywhere(-1, 1);

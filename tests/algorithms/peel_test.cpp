@@ -29,6 +29,7 @@
 #include "graphs/graph.h"
 #include "graphs/relative_neighborhood_graph.h"
 #include "tests/support/edge_sets.h"
+#include "tests/support/hand_made_curves.h"
 #include "tests/support/point_generators.h"
 #include "tests/support/reconstruction_cases.h"
 
@@ -335,31 +336,14 @@ TEST(Peel, GridKeepsEveryUnitEdge) {
   for (const double reach : {0.0, 1.5}) EXPECT_EQ(peel_reconstruction(points, reach), canonical(expected)) << reach;
 }
 
-// The lemniscate of Bernoulli (x^2 + y^2)^2 = x^2 - y^2: a figure-eight whose two branches
-// cross at the origin at right angles, at t = pi/2 and t = 3 pi/2.
-Point lemniscate(double t) {
-  const double s = std::sin(t), c = std::cos(t), d = 1 + s * s;
-  return {c / d, s * c / d};
-}
-
 TEST(Peel, RecoversTheCrossingOfAFigureEightSampledAtTheCrossing) {
   // n samples evenly in t, so both branches are sampled at the origin: one point there, of
   // degree 4 in the truth, its four neighbours equally far (by symmetry, up to rounding).
   for (const std::size_t n : {200u, 400u, 1000u}) {
-    std::vector<Point> points;
-    std::vector<std::size_t> index(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i == 3 * n / 4) {
-        index[i] = index[n / 4];
-        continue;
-      }
-      index[i] = points.size();
-      points.push_back(i == n / 4 ? Point(0, 0) : lemniscate(2 * std::numbers::pi * double(i) / double(n)));
-    }
-    Edges truth;
-    for (std::size_t i = 0; i < n; ++i) truth.emplace_back(index[i], index[(i + 1) % n]);
-    truth = canonical(truth);
-    const std::size_t centre = index[n / 4];
+    const auto eight = testing::figure_eight_sampled_at_the_crossing(n);
+    const std::vector<Point>& points = eight.points;
+    const Edges& truth = eight.truth;
+    const std::size_t centre = eight.crossing;
 
     // Without P3, the centre keeps two of its four edges (P2); the two neighbours it drops
     // are left with one edge each, and nothing else changes.
@@ -386,11 +370,9 @@ TEST(Peel, FigureEightCrossingBetweenSamplesBecomesARectangle) {
   // outer neighbour (about 2.8u), which P2 drops. That outer neighbour is left with one
   // edge; P3 at reach 1.5 joins it back to its corner, as near as its own edge.
   for (const std::size_t n : {200u, 400u, 1000u}) {
-    std::vector<Point> points;
-    for (std::size_t i = 0; i < n; ++i)
-      points.push_back(lemniscate(2 * std::numbers::pi * (double(i) + 0.5) / double(n)));
-    Edges truth;
-    for (std::size_t i = 0; i < n; ++i) truth.emplace_back(i, (i + 1) % n);
+    const auto eight = testing::figure_eight_sampled_between(n);
+    const std::vector<Point>& points = eight.points;
+    const Edges& truth = eight.truth;
     const std::size_t a1 = n / 4 - 1, a2 = n / 4, b1 = 3 * n / 4 - 1, b2 = 3 * n / 4;
     const std::set<Edge> diagonals{{a1, a2}, {b1, b2}};
     const std::set<Edge> outer{{a1 - 1, a1}, {a2, a2 + 1}, {b1 - 1, b1}, {b2, b2 + 1}};

@@ -21,9 +21,9 @@
 
 #include "algorithms/registry.h"
 #include "algorithms/shape_hull.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "graphs/delaunay_graph.h"
 #include "tests/support/brute_force_graphs.h"
 #include "tests/support/edge_sets.h"
@@ -37,21 +37,13 @@ using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
 using testing::along;
 using testing::scaled_by;
+using testing::degrees;
 
 struct Vec {
   Rational x, y;
 };
 Vec minus(const Point& a, const Point& b) { return {Rational(a.x()) - Rational(b.x()), Rational(a.y()) - Rational(b.y())}; }
 Rational dot(const Vec& u, const Vec& v) { return u.x * v.x + u.y * v.y; }
-Rational cross(const Vec& u, const Vec& v) { return u.x * v.y - u.y * v.x; }
-
-// True if d is strictly inside the circle through a, b, c (not collinear).
-bool inside_circle(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const Vec u = minus(a, d), v = minus(b, d), w = minus(c, d);
-  const Rational det = dot(u, u) * cross(v, w) - dot(v, v) * cross(u, w) + dot(w, w) * cross(u, v);
-  const Rational orientation = cross(minus(b, a), minus(c, a));
-  return orientation > 0 ? det > 0 : det < 0;
-}
 
 // The rule in its plainest form: while some boundary edge pq has its triangle's apex r off
 // the boundary and (p - r).(q - r) < 0, remove the triangle of the longest such edge (ties to
@@ -59,20 +51,7 @@ bool inside_circle(const Point& a, const Point& b, const Point& c, const Point& 
 // circumcircle holds no other point (general position: the triangulation is unique).
 Edges brute_shape_hull(const std::vector<Point>& points, const Edges& delaunay) {
   const std::size_t n = points.size();
-  const auto is_edge = [&](std::size_t i, std::size_t j) {
-    return std::binary_search(delaunay.begin(), delaunay.end(), Edge(std::min(i, j), std::max(i, j)));
-  };
-  std::vector<std::array<std::size_t, 3>> triangles;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      for (std::size_t k = j + 1; k < n; ++k) {
-        if (!is_edge(i, j) || !is_edge(j, k) || !is_edge(i, k)) continue;
-        if (cross(minus(points[j], points[i]), minus(points[k], points[i])) == 0) continue;
-        bool empty = true;
-        for (std::size_t m = 0; m < n && empty; ++m)
-          if (m != i && m != j && m != k && inside_circle(points[i], points[j], points[k], points[m])) empty = false;
-        if (empty) triangles.push_back({i, j, k});
-      }
+  const auto triangles = testing::brute_force_delaunay_triangles(points, delaunay);
   if (triangles.empty()) return delaunay;  // collinear: the chain
 
   std::vector<bool> present(triangles.size(), true);
@@ -111,12 +90,6 @@ Edges brute_shape_hull(const std::vector<Point>& points, const Edges& delaunay) 
     }
     present[best->second] = false;
   }
-}
-
-std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
-  std::vector<std::size_t> degree(n);
-  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
-  return degree;
 }
 
 // Every vertex of degree 0 or 2 and the edges one connected cycle.

@@ -21,7 +21,7 @@
 
 #include "algorithms/registry.h"
 #include "algorithms/sig_connect2d.h"
-#include "geometry/corner_curve.h"
+#include "geometry/curves/corner_curve.h"
 #include "graphs/delaunay_graph.h"
 #include "graphs/sphere_of_influence_delaunay_graph.h"
 #include "tests/support/brute_force_graphs.h"
@@ -34,6 +34,7 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::degrees;
 
 Rational squared_length(const std::vector<Point>& points, const Edge& e) {
   const Point &a = points[e.first], &b = points[e.second];
@@ -56,12 +57,6 @@ Edges intersection(const Edges& a, const Edges& b) {
 }
 
 bool subset(const Edges& a, const Edges& b) { return std::includes(b.begin(), b.end(), a.begin(), a.end()); }
-
-std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
-  std::vector<std::size_t> degree(n);
-  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
-  return degree;
-}
 
 // S1-S4 in the plainest data structures, on a unique triangulation `delaunay`; counts the
 // edges that S3 cuts and S4 adds, so the property can show that it exercises both.

@@ -1,5 +1,5 @@
 // StretchDenoise (algorithms/stretch_denoise.h) against independent oracles: the closed
-// form |‖p - c‖ - r| of a circle, the RMS distance (geometry/curve_distance.h) to the
+// form |‖p - c‖ - r| of a circle, the RMS distance (geometry/metrics/curve_distance.h) to the
 // true curve of Fourier curves and font glyphs with lfs noise (survey, "Robustness to
 // Noise": epsilon = 0.3, delta = 0.1 and 1/3), HNN-Crust's edges on the same input, and
 // laws for every input: each output point within its noise cut-off of its input point,
@@ -17,15 +17,15 @@
 #include "algorithms/hnn_crust.h"
 #include "algorithms/registry.h"
 #include "algorithms/stretch_denoise.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/curve_distance.h"
-#include "geometry/glyph_curves.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/nearest_segment_index.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/metrics/curve_distance.h"
+#include "geometry/curves/glyph_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/metrics/nearest_segment_index.h"
 #include "geometry/point_set.h"
-#include "geometry/sampling.h"
-#include "geometry/sampling_noise.h"
-#include "geometry/seeded_random.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/sampling/sampling_noise.h"
+#include "geometry/sampling/seeded_random.h"
 #include "tests/support/edge_sets.h"
 #include "tests/support/point_generators.h"
 #include "tests/support/reconstruction_cases.h"

@@ -13,6 +13,7 @@
 #include "algorithms/registry.h"
 #include "algorithms/vicur.h"
 #include "tests/support/edge_sets.h"
+#include "tests/support/hand_made_curves.h"
 #include "tests/support/point_generators.h"
 #include "tests/support/reconstruction_cases.h"
 
@@ -35,24 +36,15 @@ TEST(Vicur, ReconstructsDenseSmoothClosedCurves) {
 }
 
 TEST(Vicur, ReconstructsOpenCurvesAndTwoCircles) {
-  std::vector<Point> sine;
-  for (int i = 0; i <= 200; ++i) sine.emplace_back(i * 0.03, 0.4 * std::sin(i * 0.03));
-  EXPECT_EQ(vicur_reconstruction(sine), testing::path_edges(sine.size()));
-  std::vector<Point> circles = testing::regular_polygon(60, 1.0);
-  for (const Point& p : testing::regular_polygon(25, 0.5, 0.1)) circles.emplace_back(p.x() + 3, p.y());
-  Edges truth = testing::cycle_edges(60);
-  for (const Edge& e : testing::cycle_edges(25, 60)) truth.push_back(e);
-  EXPECT_EQ(vicur_reconstruction(circles), testing::canonical(truth));
+  for (const auto& c : {testing::sine_arc(), testing::two_circles()})
+    EXPECT_EQ(vicur_reconstruction(c.points), c.truth) << c.name;
 }
 
 // A square and a 70-degree kite, uniformly sampled: each corner turns by 90 degrees or
 // more at an edge no longer than the end edge, which corner_ratio 1.5 admits.
 TEST(Vicur, ReconstructsSharpCornersSampledUniformly) {
-  const auto square = testing::along({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {16, 16, 16, 16});
-  EXPECT_EQ(vicur_reconstruction(square), testing::cycle_edges(square.size()));
-  const double half = std::tan(35 * std::numbers::pi / 180) * 3;
-  const auto kite = testing::along({{0, 0}, {3, -half}, {4.5, 0}, {3, half}}, {30, 18, 18, 30});
-  EXPECT_EQ(vicur_reconstruction(kite), testing::cycle_edges(kite.size()));
+  for (const auto& c : {testing::sampled_square(), testing::sampled_kite()})
+    EXPECT_EQ(vicur_reconstruction(c.points), c.truth) << c.name;
 }
 
 // Two open polylines of spacing 1 whose ends are 1.87 apart, meeting at a 105-degree

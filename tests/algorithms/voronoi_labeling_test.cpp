@@ -21,9 +21,9 @@
 #include <CGAL/Exact_rational.h>
 
 #include "algorithms/voronoi_labeling.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "graphs/delaunay_graph.h"
 #include "tests/support/brute_force_graphs.h"
 #include "tests/support/edge_sets.h"
@@ -37,6 +37,7 @@ using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
 using testing::along;
 using testing::scaled_by;
+using testing::degrees;
 
 struct Q {
   Rational x, y;
@@ -88,27 +89,13 @@ std::optional<Edges> brute_pass(const std::vector<Point>& points) {
       if (supporting(i, j) || supporting(j, i)) result.emplace_back(i, j);
     return result;
   }
-  const auto is_edge = [&](std::size_t i, std::size_t j) {
-    return std::binary_search(delaunay.begin(), delaunay.end(), Edge(std::min(i, j), std::max(i, j)));
-  };
   struct Triangle {
     std::array<std::size_t, 3> v;  // increasing
     Circle circle;
   };
   std::vector<Triangle> triangles;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      for (std::size_t k = j + 1; k < n; ++k) {
-        if (!is_edge(i, j) || !is_edge(j, k) || !is_edge(i, k) || cross(minus(q[j], q[i]), minus(q[k], q[i])) == 0)
-          continue;
-        const Circle circle = circle_through(q[i], q[j], q[k]);
-        bool empty = true;
-        for (std::size_t m = 0; m < n && empty; ++m) {
-          const Q r = minus(q[m], circle.centre);
-          if (m != i && m != j && m != k && dot(r, r) < circle.squared_radius) empty = false;
-        }
-        if (empty) triangles.push_back({{i, j, k}, circle});
-      }
+  for (const auto& v : testing::brute_force_delaunay_triangles(points, delaunay))
+    triangles.push_back({v, circle_through(q[v[0]], q[v[1]], q[v[2]])});
   const std::size_t count = triangles.size();
   std::vector<bool> queued(count, false), popped(count, false), outer(count, false), treated(n, false);
   for (std::size_t t = 0; t < count; ++t)
@@ -169,12 +156,6 @@ std::optional<Edges> brute_voronoi_labeling(const std::vector<Point>& points) {
       if (!used[i]) left.push_back(i);
   }
   return testing::canonical(std::move(result));
-}
-
-std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
-  std::vector<std::size_t> degree(n);
-  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
-  return degree;
 }
 
 bool is_canonical(const Edges& edges, std::size_t n) {

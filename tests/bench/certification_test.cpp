@@ -13,9 +13,9 @@
 #include "bench/runner/certification.h"
 #include "bench/runner/results_table.h"
 #include "certify/theorems.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
-#include "tests/geometry/temporary_directory.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
+#include "tests/support/temporary_directory.h"
 
 namespace curvebench::bench {
 namespace {

@@ -19,8 +19,8 @@
 #include "bench/runner/results_table.h"
 #include "bench/runner/run.h"
 #include "bench/runner/suite.h"
-#include "geometry/point_io.h"
-#include "tests/geometry/temporary_directory.h"
+#include "geometry/io/point_io.h"
+#include "tests/support/temporary_directory.h"
 
 namespace curvebench::bench {
 namespace {

@@ -12,11 +12,11 @@
 
 #include "certify/ambiguity_search.h"
 #include "certify/sampling_measure.h"
-#include "geometry/curve_name.h"
-#include "geometry/curve_spec.h"
-#include "geometry/edge_io.h"
-#include "geometry/point_io.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/curve_name.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
+#include "geometry/sampling/sampling.h"
 
 namespace curvebench::certify {
 namespace {

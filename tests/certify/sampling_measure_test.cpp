@@ -8,9 +8,9 @@
 #include <numbers>
 
 #include "certify/sampling_measure.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/corner_curve.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/curves/corner_curve.h"
+#include "geometry/sampling/sampling.h"
 #include "tests/support/closed_form_lfs.h"
 #include "tests/support/even_in_range.h"
 

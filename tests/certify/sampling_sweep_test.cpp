@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "certify/sampling_measure.h"
-#include "geometry/curve_spec.h"
-#include "geometry/glyph_curves.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/curve_spec.h"
+#include "geometry/curves/glyph_curves.h"
+#include "geometry/sampling/sampling.h"
 
 namespace curvebench::certify {
 namespace {

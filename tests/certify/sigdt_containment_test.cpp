@@ -27,9 +27,9 @@
 
 #include "certify/sampling_measure.h"
 #include "certify/theorems.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/local_feature_size.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
 #include "graphs/sphere_of_influence_delaunay_graph.h"
 #include "tests/support/edge_sets.h"
 

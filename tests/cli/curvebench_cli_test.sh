@@ -29,6 +29,25 @@ check "duplicates: exit 0" test $? -eq 0
 check "duplicates: one note naming both lines" grep -q "dup.xy:3: duplicate of the point on line 1, merged" "$work/err"
 check "duplicates: edges in input indices" diff <(printf '0 1\n0 3\n') "$work/dup.edges"
 
+# Files as users have them: the same points with a UTF-8 byte-order mark, and as a CSV
+# with a header line (x,y; pandas' unnamed index column), reconstruct to the plain file's edges.
+"$curvebench" sample --curve ellipse:a=2,b=1 --epsilon 0.3 --safe -o "$work/plain" >/dev/null
+{ printf '\xEF\xBB\xBF'; cat "$work/plain.xy"; } >"$work/bom.xy"
+{ echo 'x,y'; tr ' ' ',' <"$work/plain.xy"; } >"$work/header.csv"
+{ echo ',x,y'; awk '{ print NR - 1 "," $1 "," $2 }' "$work/plain.xy"; } >"$work/pandas.csv"
+"$curvebench" reconstruct -a nn-crust -i "$work/plain.xy" -o "$work/plain.out" -q
+# The ground truth lists the closing edge as "n-1 0"; reconstruct writes i < j, sorted.
+check "the plain sample reconstructs to its ground truth" \
+  diff <(awk '{ print ($1 < $2) ? $1 " " $2 : $2 " " $1 }' "$work/plain.edges" | sort -n -k1,1 -k2,2) "$work/plain.out"
+for variant in bom.xy header.csv pandas.csv; do
+  "$curvebench" reconstruct -a nn-crust -i "$work/$variant" -o "$work/$variant.edges" -q
+  check "$variant gives the plain file's edges" diff "$work/plain.out" "$work/$variant.edges"
+done
+{ echo 'x,y'; tr ' ' ',' <"$work/plain.xy"; echo 'x,y'; } >"$work/late-header.csv"
+"$curvebench" reconstruct -a nn-crust -i "$work/late-header.csv" -o "$work/late.edges" -q 2>"$work/err"
+check "a header-like line after the first is an error naming its line" \
+  grep -q "^curvebench: $work/late-header.csv:$(($(wc -l <"$work/plain.xy") + 2)): 'x' is not a number" "$work/err"
+
 # An unknown graph kind is a usage error, not a crash.
 "$curvebench" graph no-such-graph -i "$work/dup.xy" -o "$work/x" 2>/dev/null
 status=$?

@@ -91,6 +91,32 @@ std::vector<Edge> strong_delaunay_edges(const std::vector<Point>& points) {
   return pairs_where(pts.size(), [&](std::size_t i, std::size_t j) { return circle_through_exists(pts, i, j, true); });
 }
 
+std::vector<std::array<std::size_t, 3>> brute_force_delaunay_triangles(const std::vector<Point>& points,
+                                                                      const std::vector<Edge>& delaunay) {
+  const auto pts = rational(points);
+  const std::size_t n = pts.size();
+  const auto is_edge = [&](std::size_t i, std::size_t j) {
+    return std::binary_search(delaunay.begin(), delaunay.end(), Edge(std::min(i, j), std::max(i, j)));
+  };
+  // d strictly inside the circle through a, b, c: the in-circle determinant, signed by a b c's orientation.
+  const auto inside = [&](const QP& a, const QP& b, const QP& c, const QP& d) {
+    const QP u = a - d, v = b - d, w = c - d;
+    const Q det = u.norm2() * v.cross(w) - v.norm2() * u.cross(w) + w.norm2() * u.cross(v);
+    return (b - a).cross(c - a) > 0 ? det > 0 : det < 0;
+  };
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      for (std::size_t k = j + 1; k < n; ++k) {
+        if (!is_edge(i, j) || !is_edge(j, k) || !is_edge(i, k) || (pts[j] - pts[i]).cross(pts[k] - pts[i]) == 0) continue;
+        bool empty = true;
+        for (std::size_t m = 0; m < n && empty; ++m)
+          if (m != i && m != j && m != k && inside(pts[i], pts[j], pts[k], pts[m])) empty = false;
+        if (empty) triangles.push_back({i, j, k});
+      }
+  return triangles;
+}
+
 std::size_t hull_boundary_size(const std::vector<Point>& points) {
   const auto pts = rational(points);
   const std::size_t n = pts.size();

@@ -5,6 +5,7 @@
 // polynomial rewritings in proximity_predicates.h is used here.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "geometry/edge.h"
@@ -21,6 +22,12 @@ using geometry::Point;
 // Every Delaunay triangulation lies between the two.
 std::vector<Edge> weak_delaunay_edges(const std::vector<Point>& points);
 std::vector<Edge> strong_delaunay_edges(const std::vector<Point>& points);
+
+// The triangles of the Delaunay triangulation where it is unique (strong == weak edges):
+// the triples i < j < k of `delaunay` edges, not collinear, whose circumcircle holds no
+// point strictly inside. None for collinear input.
+std::vector<std::array<std::size_t, 3>> brute_force_delaunay_triangles(const std::vector<Point>& points,
+                                                                      const std::vector<Edge>& delaunay);
 
 // Number of points on the boundary of the convex hull (vertices and points on its edges).
 std::size_t hull_boundary_size(const std::vector<Point>& points);

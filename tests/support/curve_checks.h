@@ -1,4 +1,4 @@
-// Independent checks of the curve model's contract (geometry/curve.h) for tests of the
+// Independent checks of the curve model's contract (geometry/curves/curve.h) for tests of the
 // curve sources: derivatives against finite differences, the validity of every component
 // (regular pieces that join, finite polylines), and a brute-force O(n²) self-intersection
 // test of a polyline with exact predicates, independent of the box-intersection filter
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/curve.h"
+#include "geometry/curves/curve.h"
 
 namespace curvebench::testing {
 

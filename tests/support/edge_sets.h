@@ -1,6 +1,6 @@
 // Known answers for reconstruction tests: edge sets in the registry's canonical form
-// (i < j, sorted, no repeats), the path and cycle through consecutive points, and the
-// regular polygon whose right reconstruction is that cycle.
+// (i < j, sorted, no repeats), the path and cycle through consecutive points, vertex
+// degrees, and the regular polygon whose right reconstruction is that cycle.
 #pragma once
 
 #include <cmath>
@@ -29,6 +29,13 @@ inline std::vector<geometry::Edge> cycle_edges(std::size_t n, std::size_t first 
   std::vector<geometry::Edge> edges = path_edges(n, first);
   if (n > 2) edges.emplace_back(first, first + n - 1);
   return canonical(std::move(edges));
+}
+
+// How many edges meet at each of the points 0 .. n - 1.
+inline std::vector<std::size_t> degrees(const std::vector<geometry::Edge>& edges, std::size_t n) {
+  std::vector<std::size_t> degree(n, 0);
+  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
+  return degree;
 }
 
 // k points evenly on a circle, counter-clockwise from angle `phase`.

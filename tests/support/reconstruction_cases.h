@@ -1,6 +1,6 @@
 // Inputs with a known right answer for reconstruction algorithms: random smooth closed
 // curves (one to three components, random Fourier series side by side), safe-epsilon-
-// sampled (geometry/sampling.h) at a requested epsilon below an algorithm's proven bound,
+// sampled (geometry/sampling/sampling.h) at a requested epsilon below an algorithm's proven bound,
 // with the sampling's measured epsilon (certify/sampling_measure.h) checked to be below it
 // too. The ground truth is the sampler's chain, canonical (i < j, sorted).
 #pragma once
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "certify/sampling_measure.h"
-#include "geometry/analytic_curves.h"
-#include "geometry/sampling.h"
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/sampling/sampling.h"
 #include "tests/support/edge_sets.h"
 
 namespace curvebench::testing {

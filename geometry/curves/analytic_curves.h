@@ -1,0 +1,57 @@
+// Smooth closed curves given by formulas: the survey's smooth curve C ("Definitions and
+// Notations": twice differentiable, so lfs > 0 and epsilon-samplings exist) in shapes
+// whose length, curvature and medial axis are known or easy to check, plus random smooth
+// curves for certifying sampling theorems on many cases.
+//
+// Each curve is one closed component of one piece with analytic derivatives, traversed
+// counterclockwise from its point on the positive x axis (a random Fourier curve: from
+// its point at angle 0). The exception is a superellipse with exponent n < 2: it is not
+// twice differentiable at its four axis points, which become the joins of four pieces
+// (see superellipse()).
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/curves/curve.h"
+
+namespace curvebench::geometry {
+
+// Name "circle:r=R". Throws std::invalid_argument unless r > 0 and finite.
+Curve circle(double r);
+
+// x = a cos θ, y = b sin θ. Name "ellipse:a=A,b=B". Throws unless a, b > 0 and finite.
+Curve ellipse(double a, double b);
+
+// |x/a|^n + |y/b|^n = 1, n > 0, in the polar form r(φ) = (|cos φ/a|^n + |sin φ/b|^n)^(-1/n).
+// n >= 2: one twice-differentiable piece. 1 < n < 2: four quadrant pieces in the same
+// form; the curve is C1 and its curvature is unbounded at the axis points. n <= 1: four
+// quadrant pieces (1-u)^(1/n) A + u^(1/n) B between the axis points A and B, regular at
+// both ends, so the axis points are corners (n = 1, a rhombus) or cusps (n < 1) that
+// Curve_component::corners() reports. Name "superellipse:a=A,b=B,n=N".
+Curve superellipse(double a, double b, double exponent);
+
+struct Fourier_curve_parameters {
+  int harmonics = 5;       // perturbing harmonics k = 2 .. harmonics + 1
+  double amplitude = 0.4;  // coefficient of harmonic k drawn uniformly from [-1, 1) * amplitude / k^decay
+  double decay = 2;
+};
+
+// (x, y)(θ) = (cos θ, sin θ) + Σ_k (A_k cos kθ + B_k sin kθ) with random vectors A_k, B_k:
+// a smooth closed curve, re-drawn (attempt i uses a seed derived from seed and i) until it
+// is simple: regular, its tangent turning once round (no small loop), and its polyline of
+// 8192 equal parameter steps free of self-intersections by exact segment predicates. The coefficients come from std::mt19937_64 through a fixed
+// 53-bit mapping, so they are bit-identical on every platform. Name
+// "fourier:seed=S,harmonics=H,amplitude=A,decay=D". Throws std::invalid_argument for
+// harmonics outside [0, 64], a negative or non-finite amplitude or decay, or if 1000
+// attempts all fail (amplitude far too large).
+Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& parameters = {});
+
+// Several components for multi-curve experiments: random_fourier_curve(seed + c, parameters)
+// for c = 0 .. components - 1, in a row along x, component_gap apart beyond their bounding
+// boxes (wide against every component's features, so each keeps its own lfs near it).
+// One component is random_fourier_curve itself; otherwise the name ends in
+// ",components=K". Throws std::invalid_argument for components outside [1, 64].
+inline constexpr double component_gap = 1.5;
+Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components);
+
+}  // namespace curvebench::geometry

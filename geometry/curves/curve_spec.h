@@ -1,0 +1,37 @@
+// Curves named on the command line: one string per curve source, so that experiments,
+// the certifier and the CLI can say which ground truth they ran on, and Curve::name of a
+// generated curve is a spec that makes it again.
+//
+//   circle[:r=R]                                   default r=1
+//   ellipse[:a=A,b=B]                              default a=2,b=1
+//   superellipse[:a=A,b=B,n=N]                     default a=1,b=1,n=4
+//   fourier[:seed=S,harmonics=H,amplitude=A,decay=D,components=K]  default seed=0,
+//                                                  components=1, the rest as in
+//                                                  Fourier_curve_parameters
+//   corner[:angle=DEGREES]                         default angle=30
+//   svg:FILE                                       every path of an SVG file
+//   glyph:[FONTFILE:]CHAR                          CHAR: one UTF-8 character or U+XXXX
+//                                                  (':' must be U+003A); default font DejaVu Sans
+//   truth:POINTFILE:EDGEFILE                       a ground truth (polyline_curve.h)
+//
+// Parameters are key=value pairs separated by commas, in any order, each at most once.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/curves/curve.h"
+
+namespace curvebench::geometry {
+
+// Throws std::invalid_argument with a one-line message naming the malformed part (unknown
+// kind or key, bad number, missing file name, invalid character); errors of the curve
+// sources themselves pass through (std::invalid_argument, or ParseError for a file).
+Curve make_curve(std::string_view spec);
+
+// The specs that `spec` stands for: glyph:[FONTFILE:]* gives one spec per character of the
+// font with an outline (glyph_code_points), ascending; any other spec is itself.
+std::vector<std::string> expand_curve_specs(std::string_view spec);
+
+}  // namespace curvebench::geometry

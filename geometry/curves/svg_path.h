@@ -1,0 +1,56 @@
+// Curves drawn in SVG: the survey's benchmark data (stefango74/sampling2d, data/svg/) are
+// Inkscape drawings of cubic Bézier paths, from which the survey's sampling tool ("Sampling
+// Tools") draws epsilon-samplings with exact ground truth.
+//
+// Path data (the `d` attribute) supports M m L l H h V v C c S s Q q T t Z z with implicit
+// repetition, numbers like "1e-3" or "-.5.5" (two numbers) and optional commas and white
+// space. Each subpath becomes one component, closed iff it ends with Z; quadratic Béziers
+// are elevated to cubic (cubic_bezier.h). Zero-length segments are dropped, and so is a
+// subpath left without any segment (a lone point). Z closes a subpath whose end misses its
+// start by at most 1e-4 of its size (rounded relative coordinates) by moving the end onto
+// the start, not by a tiny segment with two spurious corners. Arcs (A a) are not supported.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "geometry/curves/curve.h"
+
+namespace curvebench::geometry {
+
+using Affine_transformation = Kernel::Aff_transformation_2;
+
+// Malformed path data or transform list: the message starts "character N:" (0-based).
+class Svg_syntax_error : public std::invalid_argument {
+ public:
+  Svg_syntax_error(std::size_t position, const std::string& message)
+      : std::invalid_argument("character " + std::to_string(position) + ": " + message), position_(position) {}
+  std::size_t position() const noexcept { return position_; }
+
+ private:
+  std::size_t position_;
+};
+
+// The curve of the path data, its control points mapped by `transform`. Throws
+// Svg_syntax_error for anything outside the grammar, for numbers outside the double
+// range, and for coordinates (after relative offsets and the transform) that are neither 0
+// nor of a magnitude in [1e-50, 1e50], where products of squared distances would overflow
+// or underflow.
+Curve parse_svg_path(std::string_view data, const Affine_transformation& transform = {});
+
+// An SVG transform list ("matrix(a b c d e f) translate(x [y]) scale(x [y]) rotate(a [x y])
+// skewX(a) skewY(a)", applied right to left). Throws Svg_syntax_error.
+Affine_transformation parse_svg_transform(std::string_view list);
+
+// Every <path d="..."> of an SVG file (those in <defs> included), in document order, each
+// mapped by the `transform` attributes of the path and its ancestors; units and viewBox
+// are ignored (the curve is in user units). Named "svg:" + file. There is no XML library
+// on the build machines, so a small tag scanner reads the file: comments, processing
+// instructions, CDATA and DOCTYPE are skipped, character entities are not decoded.
+// Throws ParseError naming the file and line of a malformed tag, path or transform.
+Curve read_svg_curve(const std::filesystem::path& file);
+
+}  // namespace curvebench::geometry

@@ -1,0 +1,372 @@
+#include "geometry/sampling/sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include "geometry/lfs/curve_search.h"
+#include "geometry/sampling/seeded_random.h"
+
+namespace curvebench::geometry {
+namespace {
+
+constexpr double safe_margin = 1e-3;  // the measure searches its own grid: stay clear of the target
+constexpr int bisection_steps = 60;
+
+double piece_count(const Curve_component& component) { return static_cast<double>(component.piece_count()); }
+
+double distance(const Point& p, const Point& q) { return std::sqrt(CGAL::squared_distance(p, q)); }
+
+// Appends the points at `parameters` (in order along the component) with their chain.
+void append(Sample& sample, const Local_feature_size& lfs, std::size_t c, const std::vector<double>& parameters) {
+  const Curve_component& component = lfs.curve().components[c];
+  const std::size_t first = sample.size();
+  for (double s : parameters) {
+    if (component.closed()) s = std::fmod(s, piece_count(component));
+    const double local = lfs.at(c, s);
+    if (local < sample.minimum_lfs) sample.floored.push_back(sample.size());
+    if (sample.size() > first) sample.edges.emplace_back(sample.size() - 1, sample.size());
+    sample.points.push_back(component.point(s));
+    sample.lfs.push_back(local);
+    sample.locations.push_back({c, s});
+    sample.labels.push_back(Sample_label::curve_point);
+  }
+  if (component.closed() && sample.size() - first >= 3) sample.edges.emplace_back(sample.size() - 1, first);
+}
+
+// Samples every walk keeps: the corners, and the ends of an open component (or the start
+// of a closed one without corners).
+std::vector<double> anchors(const Curve_component& component) {
+  std::vector<double> fixed = component.corners();
+  if (!component.closed()) {
+    if (fixed.empty() || fixed.front() != 0) fixed.insert(fixed.begin(), 0.0);
+    if (fixed.back() != piece_count(component)) fixed.push_back(piece_count(component));
+  } else if (fixed.empty()) {
+    fixed.push_back(0);
+  }
+  return fixed;
+}
+
+// A walk's admission test for a candidate v, given the last sample u (set by start(u)),
+// after the grid points passed since u (each given to pass(v)).
+class Step {
+ public:
+  Step(const Local_feature_size& lfs, std::size_t c, double target, double minimum_lfs)
+      : lfs_(lfs), c_(c), target_(target), minimum_lfs_(minimum_lfs) {}
+
+ protected:
+  Point point(double s) const { return lfs_.curve().components[c_].point(s); }
+  double lfs_at(double s) const { return lfs_.at(c_, s); }
+
+  const Local_feature_size& lfs_;
+  std::size_t c_;
+  double target_, minimum_lfs_;
+  Point from_;
+};
+
+// The survey's epsilon: v is within epsilon lfs(v) of u.
+class Epsilon_step : Step {
+ public:
+  static constexpr int grid_subdivisions = 1;  // the survey's candidates: the dense lfs sample
+
+  using Step::Step;
+  void start(double u) { from_ = point(u); }
+  bool admits(double v) const { return relative_distance(distance(from_, point(v)), lfs_at(v), minimum_lfs_) < target_; }
+  void pass(double) {}
+};
+
+// HNN-Crust's rho: half the chord against the reach of the interval walked so far.
+class Rho_step : Step {
+ public:
+  static constexpr int grid_subdivisions = 1;
+
+  using Step::Step;
+  void start(double u) {
+    from_ = point(u);
+    reach_ = lfs_at(u);
+  }
+  bool admits(double v) const {
+    return relative_distance(distance(from_, point(v)) / 2, std::min(reach_, lfs_at(v)), minimum_lfs_) < target_;
+  }
+  void pass(double v) { reach_ = std::min(reach_, lfs_at(v)); }
+
+ private:
+  double reach_ = 0;
+};
+
+// The definition of epsilon itself: every curve point passed since u is within the
+// target of u or of v. Checked on a grid of 8 steps per gap of the dense lfs sample, each
+// grid point p standing for the curve within one step h of it: as distances and lfs (a
+// distance to the medial points) are 1-Lipschitz, min(|p u|, |p v|) + h < epsilon
+// (lfs(p) - h) covers them all.
+//
+// Incremental, with the same answers as testing every passed point against v: a point
+// covered by u is covered whatever v is (the test is monotone in the distance), so only
+// the others are kept; each of those gets a distance budget (a distance to v below which
+// its test holds) and a slack against a reference point r (a recent v): while |r v| is
+// within the slack, |p v| <= |p r| + |r v| is within the budget (with margins far above
+// the rounding of both sides) and the test needs no evaluation. A walk then evaluates a
+// few points per candidate instead of all of them.
+class Coverage_step : Step {
+ public:
+  static constexpr int grid_subdivisions = 8;
+
+  using Step::Step;
+  void start(double u) {
+    from_ = last_ = point(u);
+    open_.clear();
+    has_reference_ = false;
+    smallest_slack_ = infinity;
+    last_failed_ = no_point;
+  }
+  bool admits(double v) {
+    if (open_.empty()) return true;
+    const Point to = point(v);
+    const double moved = distance(reference_, to);
+    if (moved <= smallest_slack_) return true;
+    if (last_failed_ < open_.size() && !(moved <= open_[last_failed_].slack) && !holds(open_[last_failed_], to))
+      return false;
+    std::size_t evaluated = 0;
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (moved <= open_[i].slack) continue;
+      ++evaluated;
+      if (!holds(open_[i], to)) {
+        last_failed_ = i;
+        return false;
+      }
+    }
+    if (evaluated > 2 + open_.size() / 16) {  // the reference is stale: move it here
+      reference_ = to;
+      smallest_slack_ = infinity;
+      for (Open& p : open_) smallest_slack_ = std::min(smallest_slack_, p.slack = slack(p, distance(p.point, to)));
+    }
+    return true;
+  }
+  void pass(double v) {
+    const Point p = point(v);
+    // The arc between grid points is at most 1.001 times their chord (they are far
+    // closer than the radius of curvature).
+    const double step = 1.001 * distance(p, last_), local = lfs_at(v);
+    last_ = p;
+    const double from = distance(p, from_);
+    if (relative_distance(from + step, local - step, minimum_lfs_) < target_) return;  // covered by u
+    Open open{p, from, step, local, -infinity, -infinity};
+    const double budget = (target_ * std::max(local - step, minimum_lfs_) - step) * (1 - 1e-9);
+    if (budget > 0 && holds(open, budget)) open.budget = budget;
+    if (!has_reference_) reference_ = p, has_reference_ = true;
+    open.slack = slack(open, distance(p, reference_));
+    smallest_slack_ = std::min(smallest_slack_, open.slack);
+    open_.push_back(open);
+  }
+
+ private:
+  static constexpr std::size_t no_point = static_cast<std::size_t>(-1);
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
+
+  struct Open {
+    Point point;
+    double from, step, lfs;
+    double budget;  // a distance to v within which the test holds; -infinity if none is known
+    double slack;   // |r v| within which |p v| is within the budget
+  };
+  // The test itself, with |p v| = to_distance.
+  bool holds(const Open& p, double to_distance) const {
+    return relative_distance(std::min(p.from, to_distance) + p.step, p.lfs - p.step, minimum_lfs_) < target_;
+  }
+  bool holds(const Open& p, const Point& to) const { return holds(p, distance(p.point, to)); }
+  // Computed distances are within 4e-16 relative of the true ones, so if |r v| <= slack,
+  // the computed |p v| <= (|p r| + |r v|) (1 + 3e-15) < budget; the absolute term covers
+  // underflow.
+  static double slack(const Open& p, double reference_distance) {
+    return p.budget * (1 - 1e-13) - reference_distance - 1e-150;
+  }
+
+  Point last_;
+  std::vector<Open> open_;  // the points passed since u that u does not cover
+  Point reference_;
+  bool has_reference_ = false;
+  double smallest_slack_ = infinity;
+  std::size_t last_failed_ = no_point;
+};
+
+// The greedy walk from `begin` to `end` over the dense lfs sample: appends the samples
+// strictly between them.
+template <class Step>
+void walk(const Local_feature_size& lfs, std::size_t c, double begin, double end, Step& step, std::vector<double>& out) {
+  const std::vector<double> candidates = lfs.grid(c, begin, end, Step::grid_subdivisions);
+  double u = begin;
+  step.start(u);
+  for (std::size_t j = 1; j < candidates.size();) {
+    if (step.admits(candidates[j])) {
+      step.pass(candidates[j++]);
+      continue;
+    }
+    double low = std::max(candidates[j - 1], u), high = candidates[j];
+    for (int i = 0; i < bisection_steps; ++i) {
+      const double middle = low + (high - low) / 2;
+      if (middle <= low || middle >= high) break;
+      (step.admits(middle) ? low : high) = middle;
+    }
+    u = low > u ? low : high;  // always move on, even if the boundary is below double resolution
+    out.push_back(u);
+    step.start(u);
+    if (u >= candidates[j]) ++j;
+  }
+}
+
+// The walk through each component, from anchor to anchor; returns the parameters in order.
+template <class Make_step>
+std::vector<std::vector<double>> walk_curve(const Local_feature_size& lfs, Make_step make_step) {
+  std::vector<std::vector<double>> all;
+  for (std::size_t c = 0; c < lfs.curve().components.size(); ++c) {
+    const Curve_component& component = lfs.curve().components[c];
+    const std::vector<double> fixed = anchors(component);
+    auto step = make_step(c);
+    auto& parameters = all.emplace_back();
+    const std::size_t spans = component.closed() ? fixed.size() : fixed.size() - 1;
+    for (std::size_t k = 0; k < spans; ++k) {
+      parameters.push_back(fixed[k]);
+      walk(lfs, c, fixed[k], k + 1 < fixed.size() ? fixed[k + 1] : fixed[0] + piece_count(component), step, parameters);
+    }
+    if (!component.closed()) parameters.push_back(fixed.back());
+  }
+  return all;
+}
+
+Sample assemble(const Local_feature_size& lfs, const std::vector<std::vector<double>>& parameters, double minimum_lfs) {
+  Sample sample;
+  sample.minimum_lfs = minimum_lfs;
+  for (std::size_t c = 0; c < parameters.size(); ++c) append(sample, lfs, c, parameters[c]);
+  return sample;
+}
+
+void check_walk_arguments(const char* name, double target, double minimum_lfs) {
+  if (!(target > 0 && std::isfinite(target)) || !(minimum_lfs > 0 && std::isfinite(minimum_lfs)))
+    throw std::invalid_argument(std::string(name) + ": the target and minimum_lfs must be positive and finite");
+}
+
+// Splits [u, v] at its worst-covered point until each part is covered within the target;
+// appends u and the split points.
+void cover(const Local_feature_size& lfs, std::size_t c, double u, double v, double target, double minimum_lfs,
+           std::vector<double>& out) {
+  const Curve_component& component = lfs.curve().components[c];
+  const Point pu = component.point(u), pv = component.point(v);
+  const Curve_maximum worst = maximize_along(lfs, c, u, v, [&](double s) {
+    const Point p = component.point(s);
+    return relative_distance(std::min(distance(p, pu), distance(p, pv)), lfs.at(c, s), minimum_lfs);
+  });
+  if (worst.value <= target * (1 - safe_margin) || !(worst.parameter > u && worst.parameter < v)) {
+    out.push_back(u);
+    return;
+  }
+  cover(lfs, c, u, worst.parameter, target, minimum_lfs, out);
+  cover(lfs, c, worst.parameter, v, target, minimum_lfs, out);
+}
+
+// n points along one component at equal arc-length steps (both ends if it is open).
+std::vector<double> equal_steps(const Curve_component& component, std::size_t k) {
+  std::vector<double> parameters;
+  const double steps = static_cast<double>(component.closed() ? k : k - 1);
+  for (std::size_t j = 0; j < k; ++j)
+    parameters.push_back(component.parameter_at_arc_length(component.length() * static_cast<double>(j) / steps));
+  return parameters;
+}
+
+Sample equal_step_sample(const Local_feature_size& lfs, const std::vector<std::size_t>& counts) {
+  std::vector<std::vector<double>> parameters;
+  for (std::size_t c = 0; c < counts.size(); ++c) parameters.push_back(equal_steps(lfs.curve().components[c], counts[c]));
+  return assemble(lfs, parameters, 0);
+}
+
+std::size_t minimum_points(const Curve_component& component) { return component.closed() ? 1 : 2; }
+
+}  // namespace
+
+double default_minimum_lfs(const Local_feature_size& lfs) { return 1e-3 * lfs.bounding_box_diagonal(); }
+
+Sample epsilon_sampling(const Local_feature_size& lfs, double epsilon, double minimum_lfs) {
+  check_walk_arguments("epsilon sampling", epsilon, minimum_lfs);
+  return assemble(lfs, walk_curve(lfs, [&](std::size_t c) { return Epsilon_step(lfs, c, epsilon, minimum_lfs); }),
+                  minimum_lfs);
+}
+
+Sample safe_epsilon_sampling(const Local_feature_size& lfs, double epsilon, double minimum_lfs) {
+  check_walk_arguments("safe epsilon sampling", epsilon, minimum_lfs);
+  const auto walked = walk_curve(
+      lfs, [&](std::size_t c) { return Coverage_step(lfs, c, epsilon * (1 - safe_margin), minimum_lfs); });
+  std::vector<std::vector<double>> covered;
+  for (std::size_t c = 0; c < walked.size(); ++c) {
+    const Curve_component& component = lfs.curve().components[c];
+    const std::vector<double>& s = walked[c];
+    auto& parameters = covered.emplace_back();
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) cover(lfs, c, s[i], s[i + 1], epsilon, minimum_lfs, parameters);
+    if (component.closed())
+      cover(lfs, c, s.back(), s.front() + piece_count(component), epsilon, minimum_lfs, parameters);
+    else
+      parameters.push_back(s.back());
+  }
+  return assemble(lfs, covered, minimum_lfs);
+}
+
+Sample rho_sampling(const Local_feature_size& lfs, double rho, double minimum_lfs) {
+  check_walk_arguments("rho sampling", rho, minimum_lfs);
+  return assemble(lfs, walk_curve(lfs, [&](std::size_t c) { return Rho_step(lfs, c, rho, minimum_lfs); }), minimum_lfs);
+}
+
+Sample uniform_sampling(const Local_feature_size& lfs, std::size_t n) {
+  const auto& components = lfs.curve().components;
+  std::vector<std::size_t> counts;
+  for (const Curve_component& component : components) counts.push_back(minimum_points(component));
+  const std::size_t fixed = std::accumulate(counts.begin(), counts.end(), std::size_t{0});
+  if (n < fixed || (components.empty() && n > 0)) throw std::invalid_argument("uniform sampling: too few points for the curve's components");
+  // Largest remainders: the spare points go by length, ties to the earlier component.
+  const double spare = static_cast<double>(n - fixed), total = lfs.curve().length();
+  std::vector<double> remainders;
+  std::size_t given = fixed;
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const double share = total > 0 ? spare * components[c].length() / total : 0;
+    counts[c] += static_cast<std::size_t>(share);
+    given += static_cast<std::size_t>(share);
+    remainders.push_back(share - std::floor(share));
+  }
+  std::vector<std::size_t> order(components.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return remainders[a] > remainders[b]; });
+  for (std::size_t k = 0; given < n; ++k, ++given) ++counts[order[k % order.size()]];
+  return equal_step_sample(lfs, counts);
+}
+
+Sample uniform_sampling_with_spacing(const Local_feature_size& lfs, double spacing) {
+  if (!(spacing > 0 && std::isfinite(spacing)))
+    throw std::invalid_argument("uniform sampling: the spacing must be positive and finite");
+  std::vector<std::size_t> counts;
+  for (const Curve_component& component : lfs.curve().components) {
+    const auto steps = static_cast<std::size_t>(std::ceil(component.length() / spacing));
+    counts.push_back(std::max(component.closed() ? steps : steps + 1, minimum_points(component)));
+  }
+  return equal_step_sample(lfs, counts);
+}
+
+Sample random_sampling(const Local_feature_size& lfs, std::size_t n, std::uint64_t seed) {
+  const auto& components = lfs.curve().components;
+  std::vector<double> cumulative{0};
+  for (const Curve_component& component : components) cumulative.push_back(cumulative.back() + component.length());
+  std::vector<std::vector<double>> lengths(components.size());
+  Seeded_random random(seed);
+  for (std::size_t i = 0; i < n && !components.empty(); ++i) {
+    const double at = random.uniform() * cumulative.back();
+    const std::size_t c = std::min<std::size_t>(
+        std::upper_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin() - 1, components.size() - 1);
+    lengths[c].push_back(at - cumulative[c]);
+  }
+  std::vector<std::vector<double>> parameters(components.size());
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    std::sort(lengths[c].begin(), lengths[c].end());
+    for (const double length : lengths[c]) parameters[c].push_back(components[c].parameter_at_arc_length(length));
+  }
+  return assemble(lfs, parameters, 0);
+}
+
+}  // namespace curvebench::geometry
