@@ -5,7 +5,7 @@
 #   scripts/run.sh [SUITE [OUTPUT_DIR]]    another suite (`curvebench list suites`), elsewhere
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" run
 
 suite="${1:-default}"
 out="${2:-$root/out/$suite}"

@@ -1,18 +1,28 @@
 #!/usr/bin/env bash
 # Installs the Debian packages curvebench needs, and only those that are missing.
+#   scripts/setup.sh        everything: the build, the tests, benchmarks, fuzzers, the browser check
+#   scripts/setup.sh run    only what `curvebench` and its report need (scripts/run.sh)
 # Safe to run repeatedly; it calls apt-get only when something is absent.
 set -euo pipefail
 
-packages=(
+run_packages=(
   build-essential cmake ninja-build
   libcgal-dev libgmp-dev libmpfr-dev
   libboost-graph-dev
-  libbenchmark-dev libgtest-dev librapidcheck-dev
-  clang-14 libclang-rt-14-dev
   libfreetype-dev fonts-dejavu-core
   libtbb-dev libcli11-dev nlohmann-json3-dev
-  python3-matplotlib chromium
+  python3-matplotlib
 )
+test_packages=(
+  libbenchmark-dev libgtest-dev librapidcheck-dev
+  clang-14 libclang-rt-14-dev
+  chromium
+)
+case "${1:-test}" in
+  run) packages=("${run_packages[@]}") ;;
+  test) packages=("${run_packages[@]}" "${test_packages[@]}") ;;
+  *) echo "usage: $0 [run|test]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
