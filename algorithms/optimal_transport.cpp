@@ -18,6 +18,15 @@ namespace {
 
 using Otr = CGAL::Optimal_transportation_reconstruction_2<geometry::Kernel>;
 
+// CGAL's triangulation picks candidate edges with its own generator, seeded from the
+// clock (CGAL::Random()), so the same input gave another output a second later. It is a
+// public member of the protected triangulation: reseed it here.
+class Seeded_otr : public Otr {
+ public:
+  using Otr::Otr;
+  void seed(unsigned int seed) { m_dt.rng = CGAL::Random(seed); }
+};
+
 // x -> (x - centre) / 2^e, with 2^e above the half extent, so that every point lands in
 // [-1, 1]^2; halved before subtracting and scaled by ldexp so that no step overflows,
 // even for points near DBL_MAX, where 2^e itself is not a double.
@@ -57,8 +66,9 @@ Reconstruction optimal_transport_reconstruction(std::span<const Point> points, c
   for (const Point& p : points) unit_points.push_back(unit.to_unit(p));
 
   CGAL::get_default_random() = CGAL::Random(0);
-  Otr otr(unit_points, boost::typed_identity_property_map<Point>(), boost::static_property_map<double>(1),
-          /*sample_size=*/15, /*use_flip=*/true, options.relocation);
+  Seeded_otr otr(unit_points, boost::typed_identity_property_map<Point>(), boost::static_property_map<double>(1),
+                 /*sample_size=*/15, /*use_flip=*/true, options.relocation);
+  otr.seed(0);
   if (options.vertices > 0)
     otr.run_until(options.vertices);
   else

@@ -9,10 +9,10 @@
 // scaled into [-1, 1]^2 (so that transport costs neither overflow nor underflow at any
 // input scale) and mapped back. Its decisions are CGAL's own, on inexact transport costs:
 // the one algorithm here whose branches are not exact predicates, because the method is an
-// optimisation and its output points are constructions. CGAL's default random generator
-// is reseeded before every run and the output is numbered lexicographically, but the
-// same input can still give a different output in another run: CGAL breaks ties between
-// equal costs by memory address (seen on regular and duplicated input under load).
+// optimisation and its output points are constructions. Both of CGAL's random generators
+// (the default one, and its triangulation's, which CGAL seeds from the clock) are seeded
+// before every run and the output is numbered lexicographically, so the same input gives
+// the same output.
 #pragma once
 
 #include <cstddef>

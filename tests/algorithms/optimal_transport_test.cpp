@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <chrono>
 #include <random>
+#include <thread>
 #include <span>
 
 #include "algorithms/optimal_transport.h"
@@ -74,6 +76,17 @@ TEST(OptimalTransport, SimplifiesANoisyCircleIntoAPolygonOnIt) {
     for (const Point& p : result.points) EXPECT_LT(distance_to_unit_circle(p), 0.1) << "sigma " << sigma << ": " << p;
     EXPECT_LT(farthest_sample(points, result), 0.15) << "sigma " << sigma;
   }
+}
+
+// CGAL seeds its triangulation's edge sampling from the clock: the same input, a second
+// apart, gave other edges before the wrapper reseeded it.
+TEST(OptimalTransport, GivesTheSameOutputInAnotherSecond) {
+  const auto points = noisy_circle(300, 0.02, 5);
+  const Reconstruction first = optimal_transport_reconstruction(points);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  const Reconstruction second = optimal_transport_reconstruction(points);
+  EXPECT_EQ(first.edges, second.edges);
+  EXPECT_EQ(first.points, second.points);
 }
 
 // 3% outliers pull output vertices off the curve (CGAL's transport gives every sample the
