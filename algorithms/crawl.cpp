@@ -34,7 +34,16 @@ class Ranked_neighbors {
 
   bool among_two_nearest(Vertex v, Vertex w) const {
     const auto ranked = of(v);
-    return (!ranked.empty() && ranked[0] == w) || (ranked.size() > 1 && ranked[1] == w);
+    return (!ranked.empty() && ranked[0] == w) || second_nearest(v, w);
+  }
+  bool second_nearest(Vertex v, Vertex w) const {
+    const auto ranked = of(v);
+    return ranked.size() > 1 && ranked[1] == w;
+  }
+
+  bool closes(Vertex a, Vertex b, Crawl_closing closing) const {
+    if (closing == Crawl_closing::authors) return second_nearest(a, b) || second_nearest(b, a);
+    return among_two_nearest(a, b) && among_two_nearest(b, a);
   }
 
   // v's nearest unvisited neighbour, or no_vertex. Amortised O(1): visits only grow.
@@ -51,7 +60,7 @@ class Ranked_neighbors {
 
 }  // namespace
 
-std::vector<Edge> crawl_reconstruction(std::span<const Point> points) {
+std::vector<Edge> crawl_reconstruction(std::span<const Point> points, Crawl_closing closing) {
   const Delaunay_triangulation dt(points);
   Ranked_neighbors neighbors(dt);
 
@@ -69,7 +78,7 @@ std::vector<Edge> crawl_reconstruction(std::span<const Point> points) {
     visited[a] = visited[b] = true;
     edges.emplace_back(a, b);
     for (int grown = 0;; ++grown) {
-      if (grown >= 4 && neighbors.among_two_nearest(a, b) && neighbors.among_two_nearest(b, a)) {
+      if (grown >= 4 && neighbors.closes(a, b, closing)) {
         edges.emplace_back(a, b);
         break;
       }
@@ -90,18 +99,22 @@ std::vector<Edge> crawl_reconstruction(std::span<const Point> points) {
 }
 
 Algorithm crawl_algorithm() {
+  static const Parameter mutual_closing{
+      .name = "mutual_closing", .type = Parameter_type::integer, .default_value = 0, .minimum = 0, .maximum = 1,
+      .meaning = "0: close a path when either end is the other's second nearest (the authors'); 1: only when "
+                 "each end is among the other's two nearest (keeps more open curves open)"};
   return {
       .name = "crawl",
       .title = "Crawl",
       .reference = "Parakkat, Muthuganapathy 2016",
       .category = "Graph Based",
-      .parameters = {},
+      .parameters = {mutual_closing},
       .capabilities = {.non_uniform = Support::yes, .outliers = Support::yes, .open = Support::yes,
                        .multiple = Support::yes, .time_complexity = "O(n log n)"},
       .condition = {.statement = "none"},
-      .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
-        return Reconstruction{crawl_reconstruction(points), {}};
-      },
+      .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
+        return crawl_reconstruction(points, values[mutual_closing] == 1 ? Crawl_closing::mutual : Crawl_closing::authors);
+      }),
   };
 }
 

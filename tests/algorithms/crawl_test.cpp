@@ -21,6 +21,7 @@
 #include "tests/support/brute_force_graphs.h"
 #include "tests/support/edge_sets.h"
 #include "tests/support/point_generators.h"
+#include "tests/support/reconstruction_laws.h"
 #include "tests/support/reconstruction_cases.h"
 
 namespace curvebench::algorithms {
@@ -28,6 +29,7 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::degrees;
 
 Rational squared_distance(const Point& a, const Point& b) {
   const Rational dx = Rational(a.x()) - Rational(b.x()), dy = Rational(a.y()) - Rational(b.y());
@@ -35,7 +37,7 @@ Rational squared_distance(const Point& a, const Point& b) {
 }
 
 // The definition, in the plainest data structures.
-Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay) {
+Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay, Crawl_closing closing) {
   const std::size_t n = points.size();
   std::vector<std::vector<std::size_t>> adjacent(n);
   for (const auto& [i, j] : delaunay) {
@@ -45,9 +47,12 @@ Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay) {
   const auto key = [&](std::size_t from, std::size_t to) { return std::make_tuple(squared_distance(points[from], points[to]), to); };
   for (std::size_t v = 0; v < n; ++v)
     std::sort(adjacent[v].begin(), adjacent[v].end(), [&](std::size_t a, std::size_t b) { return key(v, a) < key(v, b); });
-  const auto two_nearest = [&](std::size_t v, std::size_t w) {
-    return std::find(adjacent[v].begin(), adjacent[v].begin() + std::min<std::size_t>(2, adjacent[v].size()), w) !=
-           adjacent[v].begin() + std::min<std::size_t>(2, adjacent[v].size());
+  const auto rank_of = [&](std::size_t v, std::size_t w) {  // 0 for the nearest, ...
+    return std::size_t(std::find(adjacent[v].begin(), adjacent[v].end(), w) - adjacent[v].begin());
+  };
+  const auto closes = [&](std::size_t a, std::size_t b) {
+    if (closing == Crawl_closing::authors) return rank_of(a, b) == 1 || rank_of(b, a) == 1;
+    return rank_of(a, b) < 2 && rank_of(b, a) < 2;
   };
 
   Edges seeds;
@@ -70,7 +75,7 @@ Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay) {
     visited[a] = visited[b] = true;
     edges.emplace_back(a, b);
     for (int grown = 0;; ++grown) {
-      if (grown >= 4 && two_nearest(a, b) && two_nearest(b, a)) {
+      if (grown >= 4 && closes(a, b)) {
         edges.emplace_back(a, b);
         break;
       }
@@ -88,36 +93,22 @@ Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay) {
   return testing::canonical(edges);
 }
 
-std::vector<std::size_t> degrees(const Edges& edges, std::size_t n) {
-  std::vector<std::size_t> degree(n);
-  for (const auto& [i, j] : edges) ++degree[i], ++degree[j];
-  return degree;
-}
-
 // Where the Delaunay triangulation is unique (no four cocircular points that matter), the
 // brute force's empty-circle edges are the triangulation.
 RC_GTEST_PROP(Crawl, EqualsBruteForceInGeneralPosition, ()) {
   const auto points = *testing::uniform_points(24);
   const Edges strong = testing::strong_delaunay_edges(points);
   RC_PRE(strong == testing::weak_delaunay_edges(points));
-  RC_ASSERT(crawl_reconstruction(points) == brute_crawl(points, strong));
+  const auto closing = *rc::gen::element(Crawl_closing::authors, Crawl_closing::mutual);
+  RC_ASSERT(crawl_reconstruction(points, closing) == brute_crawl(points, strong, closing));
 }
 
 // On every input (grids, collinear runs, extreme scales): paths and cycles of Delaunay
 // edges, the same after scaling by a power of two (exact, so every decision is the same).
 RC_GTEST_PROP(Crawl, GivesPathsAndCyclesOfDelaunayEdgesOnAnyInput, ()) {
   const auto points = *testing::point_sets(30);
-  const Edges edges = crawl_reconstruction(points);
-  const Edges delaunay = graphs::edge_list(graphs::delaunay_graph(points));
-  RC_ASSERT(std::includes(delaunay.begin(), delaunay.end(), edges.begin(), edges.end()));
-  for (const std::size_t d : degrees(edges, points.size())) RC_ASSERT(d <= 2u);
-  std::vector<Point> scaled;
-  const int exponent = *rc::gen::element(-40, -3, 5, 60);
-  for (const Point& p : points) scaled.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
-  if (std::all_of(scaled.begin(), scaled.end(), [](const Point& p) {
-        return std::isnormal(p.x()) || p.x() == 0;  // no underflow into subnormals
-      }))
-    RC_ASSERT(crawl_reconstruction(scaled) == edges);
+  const auto closing = *rc::gen::element(Crawl_closing::authors, Crawl_closing::mutual);
+  testing::rc_assert_delaunay_paths_and_cycles([&](const auto& p) { return crawl_reconstruction(p, closing); }, points);
 }
 
 // The paper's claim: dense samplings of smooth closed curves, one or several.
@@ -132,8 +123,13 @@ TEST(Crawl, ReconstructsDenseSmoothClosedCurves) {
   EXPECT_EQ(cases, 30);
 }
 
-// An open sine arc, densely and uniformly sampled: one path, both ends of degree one.
-TEST(Crawl, ReconstructsAnOpenArc) {
+// An open arc (a sine wave over [0, 6]) is where the two closing rules part. With mutual
+// closing it is the arc. With the authors' rule, the path closes across the wave's bay
+// as soon as an end becomes the other's second nearest Delaunay neighbour, leaving two
+// loops and a path: the authors' program gives these very edges on the same arc moved to
+// (1000, 1000) (at the origin, theirs ranks CGAL's unset infinite vertex, at (0, 0), as
+// point 0's nearest, and keeps the arc).
+TEST(Crawl, ReconstructsAnOpenArcWithMutualClosing) {
   std::vector<Point> points;
   Edges truth;
   for (int i = 0; i <= 200; ++i) {
@@ -141,7 +137,13 @@ TEST(Crawl, ReconstructsAnOpenArc) {
     points.emplace_back(t, 0.4 * std::sin(t));
     if (i > 0) truth.emplace_back(i - 1, i);
   }
-  EXPECT_EQ(crawl_reconstruction(points), truth);
+  EXPECT_EQ(crawl_reconstruction(points, Crawl_closing::mutual), truth);
+
+  Edges authors = truth;
+  std::erase(authors, Edge{104, 105});
+  std::erase(authors, Edge{114, 115});
+  authors.insert(authors.end(), {Edge{0, 104}, Edge{115, 200}});
+  EXPECT_EQ(crawl_reconstruction(points, Crawl_closing::authors), geometry::canonical_edges(std::move(authors)));
 }
 
 // Regular polygons: every point's two nearest are its sides' ends. Six or more close into
