@@ -38,12 +38,9 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::exact_squared_distance;
 using testing::scaled_by;
 
-Rational squared_distance(const Point& a, const Point& b) {
-  const Rational dx = Rational(a.x()) - Rational(b.x()), dy = Rational(a.y()) - Rational(b.y());
-  return dx * dx + dy * dy;
-}
 Rational cross(const Point& o, const Point& a, const Point& b) {
   return (Rational(a.x()) - Rational(o.x())) * (Rational(b.y()) - Rational(o.y())) -
          (Rational(a.y()) - Rational(o.y())) * (Rational(b.x()) - Rational(o.x()));
@@ -68,8 +65,8 @@ Edges brute_connect2d(const std::vector<Point>& points, const Edges& delaunay) {
   {
     Edges sorted = delaunay;
     std::sort(sorted.begin(), sorted.end(), [&](const Edge& a, const Edge& b) {
-      return std::make_tuple(squared_distance(points[a.first], points[a.second]), a) <
-             std::make_tuple(squared_distance(points[b.first], points[b.second]), b);
+      return std::make_tuple(exact_squared_distance(points[a.first], points[a.second]), a) <
+             std::make_tuple(exact_squared_distance(points[b.first], points[b.second]), b);
     });
     for (std::size_t r = 0; r < sorted.size(); ++r) rank[sorted[r]] = r;
   }

@@ -29,12 +29,9 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::exact_squared_distance;
 using testing::degrees;
 
-Rational squared_distance(const Point& a, const Point& b) {
-  const Rational dx = Rational(a.x()) - Rational(b.x()), dy = Rational(a.y()) - Rational(b.y());
-  return dx * dx + dy * dy;
-}
 
 // The definition, in the plainest data structures.
 Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay, Crawl_closing closing) {
@@ -44,7 +41,7 @@ Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay, Crawl
     adjacent[i].push_back(j);
     adjacent[j].push_back(i);
   }
-  const auto key = [&](std::size_t from, std::size_t to) { return std::make_tuple(squared_distance(points[from], points[to]), to); };
+  const auto key = [&](std::size_t from, std::size_t to) { return std::make_tuple(exact_squared_distance(points[from], points[to]), to); };
   for (std::size_t v = 0; v < n; ++v)
     std::sort(adjacent[v].begin(), adjacent[v].end(), [&](std::size_t a, std::size_t b) { return key(v, a) < key(v, b); });
   const auto rank_of = [&](std::size_t v, std::size_t w) {  // 0 for the nearest, ...
@@ -59,8 +56,8 @@ Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay, Crawl
   for (const auto& [i, j] : delaunay)
     if (adjacent[i].front() == j || adjacent[j].front() == i) seeds.emplace_back(i, j);
   std::sort(seeds.begin(), seeds.end(), [&](const Edge& a, const Edge& b) {
-    return std::make_tuple(squared_distance(points[a.first], points[a.second]), a) <
-           std::make_tuple(squared_distance(points[b.first], points[b.second]), b);
+    return std::make_tuple(exact_squared_distance(points[a.first], points[a.second]), a) <
+           std::make_tuple(exact_squared_distance(points[b.first], points[b.second]), b);
   });
 
   Edges edges;
@@ -82,7 +79,7 @@ Edges brute_crawl(const std::vector<Point>& points, const Edges& delaunay, Crawl
       const auto next_a = nearest_unvisited(a), next_b = nearest_unvisited(b);
       if (!next_a && !next_b) break;
       const bool grow_a =
-          !next_b || (next_a && squared_distance(points[a], points[*next_a]) < squared_distance(points[b], points[*next_b]));
+          !next_b || (next_a && exact_squared_distance(points[a], points[*next_a]) < exact_squared_distance(points[b], points[*next_b]));
       std::size_t& end = grow_a ? a : b;
       const std::size_t next = grow_a ? *next_a : *next_b;
       visited[next] = true;

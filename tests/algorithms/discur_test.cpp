@@ -30,12 +30,9 @@ namespace {
 
 using Edges = std::vector<Edge>;
 using Rational = CGAL::Exact_rational;
+using testing::exact_squared_distance;
 using testing::degrees;
 
-Rational squared_distance(const Point& a, const Point& b) {
-  const Rational dx = Rational(a.x()) - Rational(b.x()), dy = Rational(a.y()) - Rational(b.y());
-  return dx * dx + dy * dy;
-}
 
 // The rules of discur.h in the plainest data structures: an adjacency list per point, a
 // component label per point relabelled on every merge, the longest edge found by a scan.
@@ -43,7 +40,7 @@ Edges brute_grow_curves(const std::vector<Point>& points, const Edges& delaunay,
   const std::size_t n = points.size(), k = rules.closing_rank;
   std::vector<std::vector<std::size_t>> neighbors(n), links(n);
   for (const auto& [i, j] : delaunay) neighbors[i].push_back(j), neighbors[j].push_back(i);
-  const auto key = [&](std::size_t from, std::size_t to) { return std::make_tuple(squared_distance(points[from], points[to]), to); };
+  const auto key = [&](std::size_t from, std::size_t to) { return std::make_tuple(exact_squared_distance(points[from], points[to]), to); };
   for (std::size_t v = 0; v < n; ++v)
     std::sort(neighbors[v].begin(), neighbors[v].end(), [&](std::size_t a, std::size_t b) { return key(v, a) < key(v, b); });
   const auto among_nearest = [&](std::size_t v, std::size_t w) {
@@ -52,8 +49,8 @@ Edges brute_grow_curves(const std::vector<Point>& points, const Edges& delaunay,
   };
   Edges sorted = delaunay;
   std::sort(sorted.begin(), sorted.end(), [&](const Edge& a, const Edge& b) {
-    return std::make_tuple(squared_distance(points[a.first], points[a.second]), a) <
-           std::make_tuple(squared_distance(points[b.first], points[b.second]), b);
+    return std::make_tuple(exact_squared_distance(points[a.first], points[a.second]), a) <
+           std::make_tuple(exact_squared_distance(points[b.first], points[b.second]), b);
   });
   std::vector<std::size_t> label(n);
   for (std::size_t v = 0; v < n; ++v) label[v] = v;
@@ -61,7 +58,7 @@ Edges brute_grow_curves(const std::vector<Point>& points, const Edges& delaunay,
   const auto longest = [&](std::size_t l) {  // squared, 0 for a single point
     Rational best = 0;
     for (const auto& [i, j] : taken)
-      if (label[i] == l) best = std::max(best, squared_distance(points[i], points[j]));
+      if (label[i] == l) best = std::max(best, exact_squared_distance(points[i], points[j]));
     return best;
   };
   const Rational ratio2 = Rational(rules.proximity_ratio) * Rational(rules.proximity_ratio);
@@ -83,7 +80,7 @@ Edges brute_grow_curves(const std::vector<Point>& points, const Edges& delaunay,
     for (const auto& [a, b] : sorted) {
       if (links[a].size() == 2 || links[b].size() == 2) continue;
       if (std::find(taken.begin(), taken.end(), Edge{a, b}) != taken.end()) continue;
-      const Rational d2 = squared_distance(points[a], points[b]);
+      const Rational d2 = exact_squared_distance(points[a], points[b]);
       bool accept;
       if (label[a] == label[b]) {
         const std::size_t size = std::count(label.begin(), label.end(), label[a]);

@@ -8,6 +8,8 @@
 #include <array>
 #include <vector>
 
+#include <CGAL/Exact_rational.h>
+
 #include "geometry/edge.h"
 #include "geometry/kernel.h"
 #include "graphs/proximity_predicates.h"
@@ -41,6 +43,13 @@ std::vector<Edge> brute_force_minimum_spanning_tree(const std::vector<Point>& po
 std::vector<Edge> brute_force_sphere_of_influence_graph(const std::vector<Point>& points);
 std::vector<Edge> brute_force_k_nearest_neighbor_graph(const std::vector<Point>& points, std::size_t k);
 std::vector<Edge> brute_force_alpha_shape_boundary(const std::vector<Point>& points, double alpha);
+
+// |a - b|^2, exactly.
+inline CGAL::Exact_rational exact_squared_distance(const Point& a, const Point& b) {
+  const CGAL::Exact_rational dx = CGAL::Exact_rational(a.x()) - CGAL::Exact_rational(b.x());
+  const CGAL::Exact_rational dy = CGAL::Exact_rational(a.y()) - CGAL::Exact_rational(b.y());
+  return dx * dx + dy * dy;
+}
 
 // Total Euclidean length of the edges, in double.
 double total_length(const std::vector<Point>& points, const std::vector<Edge>& edges);
