@@ -1,8 +1,8 @@
 // Conformance with the authors' own programs on their own data: each algorithm whose
 // reference program is public is run here on the point sets its authors published, and
 // compared with what that program outputs on them. The reference outputs were recorded
-// from the authors' programs built unchanged apart from a headless driver (the README's
-// algorithm table says how); only their shape is kept here (edge count, components,
+// from the authors' programs built unchanged apart from a headless driver (each table
+// below names its program); only their shape is kept here (edge count, components,
 // closed components, open ends, isolated points, and an FNV-1a hash of the edge list),
 // since the Crawl figures may not be redistributed. Tests on them read ../shared/data/crawl/
 // and skip, saying so, where it is absent; those on bundled data (data/) always run.
