@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fuzz/fuzz_target.h"
 #include "geometry/io/point_io.h"
@@ -29,6 +30,10 @@ bool bit_identical(const Point& p, const Point& q) {
          std::bit_cast<std::uint64_t>(p.y()) == std::bit_cast<std::uint64_t>(q.y());
 }
 
+bool bit_identical(const std::vector<Point>& p, const std::vector<Point>& q) {
+  return std::equal(p.begin(), p.end(), q.begin(), q.end(), [](const Point& a, const Point& b) { return bit_identical(a, b); });
+}
+
 std::optional<geometry::PointFile> parsed(std::string_view text, std::string_view name) {
   try {
     return geometry::parse_point_file(text, name);
@@ -39,11 +44,10 @@ std::optional<geometry::PointFile> parsed(std::string_view text, std::string_vie
 
 void check_point_file(std::string_view text, std::string_view name) {
   const auto result = parsed(text, name);
-  if (!text.starts_with("\xEF\xBB\xBF")) {
-    const auto marked = parsed("\xEF\xBB\xBF" + std::string(text), name);
-    FUZZ_CHECK(marked.has_value() == result.has_value() &&
-                   (!result || std::equal(result->points.begin(), result->points.end(), marked->points.begin(),
-                                          marked->points.end(), bit_identical)),
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (!text.starts_with(kByteOrderMark)) {
+    const auto marked = parsed(std::string(kByteOrderMark) + std::string(text), name);
+    FUZZ_CHECK(marked.has_value() == result.has_value() && (!result || bit_identical(result->points, marked->points)),
                "a byte-order mark in front changes nothing");
   }
   if (!result) return;
@@ -59,7 +63,7 @@ void check_point_file(std::string_view text, std::string_view name) {
   std::ostringstream written;
   geometry::write_points(written, points);
   const auto again = geometry::parse_point_file(written.str(), "written.xy").points;
-  FUZZ_CHECK(std::equal(points.begin(), points.end(), again.begin(), again.end(), bit_identical),
+  FUZZ_CHECK(bit_identical(points, again),
              "write_points then parse_point_file gives the same points bit for bit");
 }
 

@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 
 #include "geometry/io/text_file.h"
 #include "geometry/io/text_records.h"
@@ -19,10 +17,13 @@ bool is_digits(std::string_view field) {
   return !field.empty() && std::ranges::all_of(field, [](char c) { return c >= '0' && c <= '9'; });
 }
 
+std::string lower_case(std::string text) {
+  std::ranges::transform(text, text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
 bool has_triangle_extension(std::string_view name) {
-  std::string extension = std::filesystem::path(name).extension().string();
-  std::ranges::transform(extension, extension.begin(),
-                         [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lower_case(std::filesystem::path(name).extension().string());
   return extension == ".node" || extension == ".gtn";
 }
 
@@ -45,19 +46,6 @@ void require_finite(std::span<const Point> points) {
                                 std::to_string(not_finite - points.begin()) +
                                 " has a non-finite coordinate");
   }
-}
-
-// Whether `field` reads entirely as a number (finite or not): a header has none.
-bool is_number(std::string_view field) {
-  if (field.size() > 1 && field[0] == '+' && field[1] != '-') field.remove_prefix(1);
-  double value = 0;
-  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-  return end == field.data() + field.size() && error != std::errc::invalid_argument;
-}
-
-std::string lower_case(std::string text) {
-  std::ranges::transform(text, text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
 }
 
 // Which field of a line is what: x, y and the optional value column, out of `count`.

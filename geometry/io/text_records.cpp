@@ -26,7 +26,21 @@ std::optional<Integer> whole_integer(std::string_view field) {
   return value;
 }
 
+// std::from_chars on `field`, but, unlike it and like strtod, taking a leading '+' (data
+// files written by printf("%+g") have one; "+-1" stays malformed). The result's ptr is
+// the end of `field` when all of it is read.
+std::from_chars_result read_double(std::string_view field, double& value) {
+  if (field.size() > 1 && field[0] == '+' && field[1] != '-') field.remove_prefix(1);
+  return std::from_chars(field.data(), field.data() + field.size(), value);
+}
+
 }  // namespace
+
+bool is_number(std::string_view field) {
+  double value = 0;
+  const auto [end, error] = read_double(field, value);
+  return end == field.data() + field.size() && error != std::errc::invalid_argument;
+}
 
 RecordReader::RecordReader(std::string_view text, std::string name)
     : rest_(text), name_(std::move(name)) {
@@ -102,14 +116,9 @@ void RecordReader::fail(std::size_t line, std::string_view message) const {
 }
 
 double RecordReader::to_real(std::string_view field, std::size_t line) const {
-  // std::from_chars, unlike strtod, refuses a leading '+'; data files written by
-  // printf("%+g") have one, so accept it (but not "+-1").
-  std::string_view number = field;
-  if (number.size() > 1 && number[0] == '+' && number[1] != '-') number.remove_prefix(1);
   double value = 0;
-  const char* last = number.data() + number.size();
-  const auto [end, error] = std::from_chars(number.data(), last, value);
-  if (end != last || error == std::errc::invalid_argument) {
+  const auto [end, error] = read_double(field, value);
+  if (end != field.data() + field.size() || error == std::errc::invalid_argument) {
     fail(line, quoted(field) + " is not a number");
   }
   if (error == std::errc::result_out_of_range) {

@@ -65,6 +65,10 @@ class RecordReader {
   std::size_t line_ = 0;
 };
 
+// Whether all of `field` reads as a number, as RecordReader::to_real reads it, in the
+// range of double and finite or not: a header line has no such field.
+bool is_number(std::string_view field);
+
 // `field` in single quotes, with control and non-ASCII bytes escaped as \xNN and long
 // fields cut, so that an error message stays one printable line whatever the input.
 std::string quoted(std::string_view field);

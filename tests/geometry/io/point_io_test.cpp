@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,6 +31,16 @@ Coordinates coordinates(const PointFile& file) {
   Coordinates out;
   for (const Point& p : file.points) out.emplace_back(p.x(), p.y());
   return out;
+}
+
+// Each file, written to disk and read, is a ParseError naming its line and token.
+void expect_each_read_fails(std::span<const BadInput> cases) {
+  const TemporaryDirectory dir;
+  for (const BadInput& bad : cases) {
+    SCOPED_TRACE(bad.file_name);
+    const auto path = dir.write(bad.file_name, bad.text);
+    expect_parse_error([&] { read_point_file(path); }, path.string(), bad.line, bad.mention);
+  }
 }
 
 TEST(PointIo, ReadsPlainPointsWithCommentsBlankLinesTabsAndCommas) {
@@ -118,12 +129,7 @@ TEST(PointIo, MalformedHeadersAndHeaderLikeLinesAreErrorsNamingTheirLine) {
       {"quoted_number.csv", "x,y\n\"1\",2\n", 2, "'\"1\"'"},
       {"skipped_column.csv", ",x,y\nzero,1,2\n", 2, "'zero'"},
   };
-  const TemporaryDirectory dir;
-  for (const BadInput& bad : cases) {
-    SCOPED_TRACE(bad.file_name);
-    const auto path = dir.write(bad.file_name, bad.text);
-    expect_parse_error([&] { read_point_file(path); }, path.string(), bad.line, bad.mention);
-  }
+  expect_each_read_fails(cases);
 }
 
 // Whatever the points, a CSV with a header (random case and quoting, maybe a byte-order
@@ -213,12 +219,7 @@ TEST(PointIo, MalformedFilesAreParseErrorsNamingFileLineAndToken) {
       {"bad_marker.node", "1 2 0 1\n0 1 1 0.5\n", 2, "'0.5'"},
       {"bogus.node", "18446744073709551615 2 18446744073709551615 1\n0 1 2\n", 2, "'0 1 2'"},
   };
-  const TemporaryDirectory dir;
-  for (const BadInput& bad : cases) {
-    SCOPED_TRACE(bad.file_name);
-    const auto path = dir.write(bad.file_name, bad.text);
-    expect_parse_error([&] { read_point_file(path); }, path.string(), bad.line, bad.mention);
-  }
+  expect_each_read_fails(cases);
 }
 
 RC_GTEST_PROP(PointIo, WriteThenReadIsBitExact, ()) {
