@@ -6,16 +6,20 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <deque>
+#include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "geometry/exact_sign.h"
 #include "graphs/delaunay_triangulation.h"
-#include "graphs/k_nearest_neighbor_graph.h"
+#include "graphs/nearest_neighbor_stream.h"
 #include "graphs/proximity_predicates.h"
 
 namespace curvebench::algorithms {
@@ -39,10 +43,10 @@ void check_input(std::span<const Point> points, const Fit_connect_options& optio
   std::sort(sorted.begin(), sorted.end());
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
     throw std::invalid_argument("fit-connect: two points are equal");
-  if (!(options.max_neighbors >= 2 && options.max_neighbors <= 1024))
-    throw std::invalid_argument("fit-connect: max_neighbors must lie in [2, 1024]");
-  if (!(options.corner_angle >= 0 && options.corner_angle <= 180))
-    throw std::invalid_argument("fit-connect: corner_angle must lie in [0, 180] degrees");
+  if (!(options.max_neighbors >= 2 && options.max_neighbors <= 65536))
+    throw std::invalid_argument("fit-connect: max_neighbors must lie in [2, 65536]");
+  if (!(options.sharp_angle >= 0 && options.sharp_angle <= 180))
+    throw std::invalid_argument("fit-connect: sharp_angle must lie in [0, 180] degrees");
 }
 
 // ---- The Kasa fit as polynomials --------------------------------------------------------
@@ -93,6 +97,9 @@ class Fitted_neighborhood {
   Fitted_neighborhood(std::span<const Point> points, Index p, std::span<const Index> neighbors)
       : points_(points), p_(p), neighbors_(neighbors),
         approx_(kasa_fit<Error_bounded_double>(points, points[p], neighbors)) {
+    approx_radial_.reserve(neighbors.size() + 1);
+    approx_radial_.push_back(radial(approx_, Vector2<Error_bounded_double>{0.0, 0.0}));
+    for (const Index m : neighbors) approx_radial_.push_back(radial(approx_, difference<Error_bounded_double>(points[m], points[p])));
     const CGAL::Sign w = geometry::exact_sign(approx_.w, [&]<class NT>(std::type_identity<NT>) {
       return kasa_fit<NT>(points_, points_[p_], neighbors_).w;
     });
@@ -107,8 +114,22 @@ class Fitted_neighborhood {
       const int s = side(j);
       if (s >= 0) members[s].push_back(j);
     }
-    for (int s = 0; s < 2; ++s)
-      std::sort(members[s].begin(), members[s].end(), [&](std::size_t a, std::size_t b) { return before(s, a, b); });
+    for (int s = 0; s < 2; ++s) {
+      // Sorted by the angle in double first, which is cheap, then checked pair by adjacent
+      // pair with the exact order; only if a pair is out of order is the side sorted again
+      // by the exact order alone. The result is the exact order either way.
+      std::vector<std::pair<double, std::size_t>> keyed;
+      for (const std::size_t j : members[s]) keyed.emplace_back(approximate_angle(j), j);
+      std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : a.second < b.second;
+      });
+      if (s == 0) std::reverse(keyed.begin(), keyed.end());
+      for (std::size_t i = 0; i < keyed.size(); ++i) members[s][i] = keyed[i].second;
+      const auto exact_before = [&](std::size_t a, std::size_t b) { return before(s, a, b); };
+      if (std::adjacent_find(members[s].begin(), members[s].end(),
+                             [&](std::size_t a, std::size_t b) { return !exact_before(a, b); }) != members[s].end())
+        std::sort(members[s].begin(), members[s].end(), exact_before);
+    }
     for (int s = 0; s < 2; ++s) {
       sides[s].clear();
       for (const std::size_t j : members[s]) sides[s].push_back(neighbors_[j - 1]);
@@ -121,20 +142,33 @@ class Fitted_neighborhood {
  private:
   const Point& point(std::size_t j) const { return j == 0 ? points_[p_] : points_[neighbors_[j - 1]]; }
 
-  // Sign of a polynomial of the fit: the cached approximation first, recomputed exactly
-  // when that does not settle it. `value` is a template lambda (fit, u) -> NT where u(j)
-  // is member j relative to p.
+  // Member j's angle around the fit's centre from p's direction, in (-pi, pi], in double:
+  // only a sort key (collinear neighbourhoods: the position along the line).
+  double approximate_angle(std::size_t j) const {
+    if (collinear_) {
+      const double dx = point(j).x() - points_[p_].x(), dy = point(j).y() - points_[p_].y();
+      const double ux = point(1).x() - points_[p_].x(), uy = point(1).y() - points_[p_].y();
+      return std::abs(dx * ux + dy * uy) * (dx * ux + dy * uy >= 0 ? 1 : -1);
+    }
+    const Vector2<Error_bounded_double>& a = approx_radial_[0];
+    const Vector2<Error_bounded_double>& b = approx_radial_[j];
+    const double ax = a.x.value(), ay = a.y.value(), bx = b.x.value(), by = b.y.value();
+    return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  }
+
+  // Sign of a polynomial of the fit: first from the cached approximations of the radial
+  // vectors, recomputed exactly when that does not settle it. `value` is a template lambda
+  // (std::type_identity<NT>, r) -> NT where r(j) is the direction from the fit's centre to
+  // member j (scaled by the fit's denominator).
   template <class Value>
   CGAL::Sign sign(const Value& value) const {
-    const auto approx_u = [&](std::size_t j) {
-      return j == 0 ? Vector2<Error_bounded_double>{0.0, 0.0} : difference<Error_bounded_double>(point(j), points_[p_]);
-    };
-    return geometry::exact_sign(value(approx_, approx_u), [&]<class NT>(std::type_identity<NT>) {
+    const auto approx_r = [&](std::size_t j) -> const Vector2<Error_bounded_double>& { return approx_radial_[j]; };
+    return geometry::exact_sign(value(std::type_identity<Error_bounded_double>{}, approx_r), [&]<class NT>(std::type_identity<NT> type) {
       const Fit<NT> fit = kasa_fit<NT>(points_, points_[p_], neighbors_);
-      const auto u = [&](std::size_t j) {
-        return j == 0 ? Vector2<NT>{NT(0), NT(0)} : difference<NT>(point(j), points_[p_]);
+      const auto r = [&](std::size_t j) {
+        return radial(fit, j == 0 ? Vector2<NT>{NT(0), NT(0)} : difference<NT>(point(j), points_[p_]));
       };
-      return value(fit, u);
+      return value(type, r);
     });
   }
 
@@ -148,12 +182,12 @@ class Fitted_neighborhood {
       return t == CGAL::POSITIVE ? 1 : 0;  // never zero: distinct collinear points
     }
     const auto zero = [&](std::size_t m) {
-      return sign([m]<class NT>(const Fit<NT>& f, const auto& u) { return squared_length(radial(f, u(m))); }) ==
+      return sign([m]<class NT>(std::type_identity<NT>, const auto& r) { return squared_length(r(m)); }) ==
              CGAL::ZERO;
     };
     if (zero(0) || zero(j)) return -1;
-    const CGAL::Sign c = sign([j]<class NT>(const Fit<NT>& f, const auto& u) {
-      return cross(radial(f, u(0)), radial(f, u(j)));
+    const CGAL::Sign c = sign([j]<class NT>(std::type_identity<NT>, const auto& r) {
+      return cross(r(0), r(j));
     });
     if (c != CGAL::ZERO) return c == CGAL::POSITIVE ? 1 : 0;
     return 1;  // on the line through the centre and p: angle 0 or pi, both "after"
@@ -168,16 +202,16 @@ class Fitted_neighborhood {
       if (t != CGAL::ZERO) return (t == CGAL::POSITIVE) == (s == 1);
       return neighbors_[a - 1] < neighbors_[b - 1];
     }
-    const CGAL::Sign c = sign([a, b]<class NT>(const Fit<NT>& f, const auto& u) {
-      return cross(radial(f, u(a)), radial(f, u(b)));
+    const CGAL::Sign c = sign([a, b]<class NT>(std::type_identity<NT>, const auto& r) {
+      return cross(r(a), r(b));
     });
     if (c != CGAL::ZERO) return (c == CGAL::POSITIVE) == (s == 1);
-    const CGAL::Sign same = sign([a, b]<class NT>(const Fit<NT>& f, const auto& u) {
-      return dot(radial(f, u(a)), radial(f, u(b)));
+    const CGAL::Sign same = sign([a, b]<class NT>(std::type_identity<NT>, const auto& r) {
+      return dot(r(a), r(b));
     });
     if (same == CGAL::POSITIVE) return neighbors_[a - 1] < neighbors_[b - 1];  // same angle
     // Opposite directions (only on side 1: angle 0 against angle pi): angle 0 first.
-    return sign([a]<class NT>(const Fit<NT>& f, const auto& u) { return dot(radial(f, u(0)), radial(f, u(a))); }) ==
+    return sign([a]<class NT>(std::type_identity<NT>, const auto& r) { return dot(r(0), r(a)); }) ==
            CGAL::POSITIVE;
   }
 
@@ -185,15 +219,15 @@ class Fitted_neighborhood {
   // to p: cos(a, b) < cos(a, p) for the directions from the centre, i.e.
   // (Va.Vp) |Vb| - (Va.Vb) |Vp| > 0.
   bool longest_chord(std::size_t a, std::size_t b) const {
-    const CGAL::Sign y = sign([a]<class NT>(const Fit<NT>& f, const auto& u) {
-      return dot(radial(f, u(a)), radial(f, u(0)));
+    const CGAL::Sign y = sign([a]<class NT>(std::type_identity<NT>, const auto& r) {
+      return dot(r(a), r(0));
     });
-    const CGAL::Sign x = sign([a, b]<class NT>(const Fit<NT>& f, const auto& u) {
-      return dot(radial(f, u(a)), radial(f, u(b)));
+    const CGAL::Sign x = sign([a, b]<class NT>(std::type_identity<NT>, const auto& r) {
+      return dot(r(a), r(b));
     });
     return root_difference_sign(y, x, [&] {
-             return sign([a, b]<class NT>(const Fit<NT>& f, const auto& u) {
-               const Vector2<NT> va = radial(f, u(a)), vb = radial(f, u(b)), vp = radial(f, u(0));
+             return sign([a, b]<class NT>(std::type_identity<NT>, const auto& r) {
+               const Vector2<NT> va = r(a), vb = r(b), vp = r(0);
                const NT yy = dot(va, vp), xx = dot(va, vb);
                return yy * yy * squared_length(vb) - xx * xx * squared_length(vp);
              });
@@ -204,6 +238,7 @@ class Fitted_neighborhood {
   Index p_;
   std::span<const Index> neighbors_;
   Fit<Error_bounded_double> approx_;
+  std::vector<Vector2<Error_bounded_double>> approx_radial_;  // member j's, j = 0 is p
   bool collinear_ = false;
 };
 
@@ -333,25 +368,6 @@ Arc_fit arc_fit(std::span<const Point> points, const Point& anchor, std::span<co
 }
 
 // The displacement from x to its nearest point on the fit, in absolute units, or nothing
-// if that point is farther than the window's extent (a fit that does not reach x).
-std::optional<Vector2<double>> displacement(const Arc_fit& fit, const Point& x) {
-  const double ux = std::ldexp(x.x() - fit.anchor.x(), -fit.e) - fit.mx;
-  const double uy = std::ldexp(x.y() - fit.anchor.y(), -fit.e) - fit.my;
-  double qx, qy;
-  if (fit.line) {
-    const double t = ux * fit.dx + uy * fit.dy;
-    qx = t * fit.dx, qy = t * fit.dy;
-  } else {
-    const double gx = ux - fit.cx, gy = uy - fit.cy, g = std::sqrt(gx * gx + gy * gy);
-    if (!(g > 0)) return std::nullopt;
-    qx = fit.cx + gx * (fit.r / g), qy = fit.cy + gy * (fit.r / g);
-  }
-  const double ddx = qx - ux, ddy = qy - uy;
-  if (!(ddx * ddx + ddy * ddy <= 1)) return std::nullopt;
-  const Vector2<double> d{std::ldexp(ddx, fit.e), std::ldexp(ddy, fit.e)};
-  if (!std::isfinite(d.x) || !std::isfinite(d.y)) return std::nullopt;
-  return d;
-}
 // ---- The angle test for sharp corners (exact) --------------------------------------------
 // The sign of cos(angle a p b) - c, for the opening angle at p.
 CGAL::Sign cosine_minus(const Point& a, const Point& p, const Point& b, double c) {
@@ -368,380 +384,664 @@ CGAL::Sign cosine_minus(const Point& a, const Point& p, const Point& b, double c
   });
 }
 
-// The sign of cos(angle a p b) - cos(angle e q f): POSITIVE if the angle at p is smaller.
-CGAL::Sign compare_cosines(const Point& a, const Point& p, const Point& b, const Point& e, const Point& q,
-                           const Point& f) {
-  const CGAL::Sign s = geometry::exact_sign(
-      [&]<class NT>(std::type_identity<NT>) { return dot(difference<NT>(a, p), difference<NT>(b, p)); });
-  const CGAL::Sign t = geometry::exact_sign(
-      [&]<class NT>(std::type_identity<NT>) { return dot(difference<NT>(e, q), difference<NT>(f, q)); });
-  return root_difference_sign(s, t, [&] {
-    return geometry::exact_sign([&]<class NT>(std::type_identity<NT>) {
-      const Vector2<NT> u = difference<NT>(a, p), v = difference<NT>(b, p);
-      const Vector2<NT> g = difference<NT>(e, q), h = difference<NT>(f, q);
-      const NT x = dot(u, v), y = dot(g, h);
-      return x * x * squared_length(g) * squared_length(h) - y * y * squared_length(u) * squared_length(v);
-    });
-  });
-}
 
-// ---- The connection rounds -------------------------------------------------------------
-class Fit_connect {
+// The nearest point of a fit to x, if it lies on the fitted arc: between the fit's
+// extreme members as seen along the fit (the authors keep a projection only inside the
+// fitted arc too). Absolute coordinates; output construction only.
+class Arc_projection {
  public:
-  Fit_connect(std::span<const Point> points, const Fit_connect_options& options)
-      : points_(points), options_(options), n_(points.size()) {}
-
-  Reconstruction run() {
-    Reconstruction result;
-    result.points.assign(points_.begin(), points_.end());
-    if (n_ < 2) return result;
-    const graphs::Delaunay_triangulation dt(points_);
-    knn_ = graphs::k_nearest_neighbors(dt, static_cast<std::size_t>(options_.max_neighbors));
-    k_.assign(n_, 0);
-    sides_.resize(n_);
-    conforming_.assign(n_, false);
-    alive_.assign(n_, true);
-    choice_.assign(n_, {none, none});
-    containing_.assign(n_, {});
-    for (Index p = 0; p < n_; ++p) {
-      k_[p] = std::min<std::size_t>(2, knn_[p].size());
-      for (std::size_t i = 0; i < k_[p]; ++i) containing_[knn_[p][i]].push_back(p);
-      refit(p);
+  Arc_projection(std::span<const Point> points, Index anchor, std::span<const Index> members)
+      : fit_(arc_fit(points, points[anchor], members)) {
+    if (!fit_.usable) return;
+    lo_ = std::numeric_limits<double>::infinity(), hi_ = -lo_;
+    const Vector2<double> reference = local(points[anchor]);
+    for (const Index m : members) {
+      const double t = position(local(points[m]), reference);
+      lo_ = std::min(lo_, t), hi_ = std::max(hi_, t);
     }
-    for (Index p = 0; p < n_; ++p) choose(p);
-    connect();
-    const std::vector<std::array<Index, 2>> adjacent = adjacency();
-    for (Index p = 0; p < n_; ++p)
-      for (const Index q : adjacent[p])
-        if (q != none && p < q) result.edges.emplace_back(p, q);
-    std::sort(result.edges.begin(), result.edges.end());
-    denoise(adjacent, result.points);
+    reference_ = reference;
+  }
+
+  std::optional<Point> project(const Point& x) const {
+    if (!fit_.usable) return std::nullopt;
+    const Vector2<double> u = local(x);
+    Vector2<double> q;
+    if (fit_.line) {
+      const double t = u.x * fit_.dx + u.y * fit_.dy;
+      q = {t * fit_.dx, t * fit_.dy};
+    } else {
+      const double gx = u.x - fit_.cx, gy = u.y - fit_.cy, g = std::sqrt(gx * gx + gy * gy);
+      if (!(g > 0)) return std::nullopt;
+      q = {fit_.cx + gx * (fit_.r / g), fit_.cy + gy * (fit_.r / g)};
+    }
+    const double t = position(q, reference_);
+    if (!(t >= lo_ && t <= hi_)) return std::nullopt;
+    const Point result(std::ldexp(q.x + fit_.mx, fit_.e) + fit_.anchor.x(), std::ldexp(q.y + fit_.my, fit_.e) + fit_.anchor.y());
+    if (!std::isfinite(result.x()) || !std::isfinite(result.y())) return std::nullopt;
     return result;
   }
 
  private:
-  std::span<const Index> members(Index p) const { return {knn_[p].data(), k_[p]}; }
-
-  void refit(Index p) {
-    const Fitted_neighborhood fit(points_, p, members(p));
-    bool conforming = false;
-    fit.order(sides_[p], conforming);
-    conforming_[p] = conforming;
+  Vector2<double> local(const Point& x) const {
+    return {std::ldexp(x.x() - fit_.anchor.x(), -fit_.e) - fit_.mx, std::ldexp(x.y() - fit_.anchor.y(), -fit_.e) - fit_.my};
+  }
+  // Where u lies along the fit: arc length along a line, angle from the reference around
+  // a circle's centre.
+  double position(const Vector2<double>& u, const Vector2<double>& reference) const {
+    if (fit_.line) return u.x * fit_.dx + u.y * fit_.dy;
+    const double ax = reference.x - fit_.cx, ay = reference.y - fit_.cy, bx = u.x - fit_.cx, by = u.y - fit_.cy;
+    return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
   }
 
-  // p's choice on each side: the nearest live point along its fit.
-  void choose(Index p) {
-    for (int s = 0; s < 2; ++s) {
-      choice_[p][s] = none;
-      for (const Index q : sides_[p][s])
-        if (alive_[q]) {
-          choice_[p][s] = q;
-          break;
-        }
+  Arc_fit fit_;
+  Vector2<double> reference_{0, 0};
+  double lo_ = 0, hi_ = 0;
+};
+
+// ---- The state machine of the authors' reconstructNoisy -----------------------------------
+// Every point starts unhandled and is fitted with its two nearest neighbours. Rounds visit
+// the unhandled points in index order; each visit grows the point's neighbourhood by the
+// next nearest point, refits it, and updates the "overlaps": p and q overlap when each
+// lies in the other's fitted neighbourhood, on facing sides, and they become each other's
+// curve neighbours ("links"). The points strictly between two overlapping points, in both
+// neighbourhoods, are redundant and eliminated: this is what thins a noisy band to one
+// chain of representative points. A point with links on both sides is manifold (handled);
+// a point whose neighbourhood cannot grow any more becomes a leaf (a curve end) or is
+// eliminated. The rules below are the authors', renamed; see fit_connect.h for the few
+// places where ours differ.
+enum class State : std::uint8_t { initial, conform, nonconform, manifold, sharp, leaf, eliminated };
+
+bool is_handled(State s) { return s == State::manifold || s == State::sharp || s == State::leaf || s == State::eliminated; }
+bool on_curve(State s) { return s == State::manifold || s == State::sharp || s == State::leaf; }
+
+class Fit_connect {
+ public:
+  Fit_connect(std::span<const Point> points, const Fit_connect_options& options)
+      : points_(points), options_(options), n_(points.size()), dt_(points), state_(n_, State::initial),
+        nearest_(n_), sides_(n_), links_(n_, {none, none}), referrers_(n_) {
+    streams_.reserve(n_);
+    for (Index p = 0; p < n_; ++p) streams_.emplace_back(dt_, p);
+  }
+
+  Fitted_connectivity run() {
+    Fitted_connectivity result;
+    if (n_ < 3) return result;  // a fit needs a point and two neighbours
+    for (Index p = 0; p < n_; ++p) unhandled_.insert(p);
+    // Each visit grows a neighbourhood, and neighbourhoods are bounded, so the rounds end;
+    // the bound on visits only guards against a cycle of state changes we have not seen.
+    const std::size_t most_visits = 8 * n_ * static_cast<std::size_t>(options_.max_neighbors) + 64;
+    std::size_t visits = 0;
+    while (!unhandled_.empty() && visits < most_visits) {
+      cursor_ = *unhandled_.begin();
+      while (cursor_ != none && visits++ < most_visits) {
+        const Index p = cursor_;
+        cursor_ = successor(p);
+        visit(p);
+      }
+    }
+    for (Index p = 0; p < n_; ++p)
+      if (on_curve(state_[p])) result.representatives.push_back(p);
+    for (const Index p : result.representatives)
+      for (const Index q : links_[p])  // both ways, so that no point gets a third edge
+        if (q != none && on_curve(state_[q]) && (links_[q][0] == p || links_[q][1] == p))
+          result.edges.emplace_back(std::min(p, q), std::max(p, q));
+    result.edges = geometry::canonical_edges(std::move(result.edges));
+    return result;
+  }
+
+  // The authors' blending (projectPoints): each representative moves to the mean of its
+  // projections onto its own fit and onto the fits of the manifold points whose
+  // neighbourhoods hold it; sharp points and their curve neighbours keep their position.
+  std::vector<Point> blended(std::span<const Index> representatives) const {
+    std::vector<double> sum_x(n_, 0), sum_y(n_, 0);
+    std::vector<int> weight(n_, 0);
+    const auto fixed = [&](Index p) {
+      if (state_[p] == State::sharp) return true;
+      for (const Index q : links_[p])
+        if (q != none && state_[q] == State::sharp) return true;
+      return false;
+    };
+    for (const Index p : representatives) {
+      if (state_[p] != State::manifold) continue;
+      std::vector<Index> members{p};
+      for (int s = 0; s < 2; ++s) members.insert(members.end(), sides_[p][s].begin(), sides_[p][s].end());
+      const Arc_projection arc(points_, p, members);
+      for (const Index k : members) {
+        if (fixed(k)) continue;
+        if (const std::optional<Point> q = arc.project(points_[k])) sum_x[k] += q->x(), sum_y[k] += q->y(), ++weight[k];
+      }
+    }
+    std::vector<Point> result;
+    for (const Index p : representatives) {
+      const bool moved = options_.blend && weight[p] > 0;
+      result.push_back(moved ? Point(sum_x[p] / weight[p], sum_y[p] / weight[p]) : points_[p]);
+    }
+    return result;
+  }
+
+ private:
+  using Sides = std::array<std::vector<Index>, 2>;
+
+  // ---- Bookkeeping of the unhandled set, as the authors' loop walks it ------------------
+  Index successor(Index p) const {
+    const auto next = unhandled_.upper_bound(p);
+    return next == unhandled_.end() ? none : *next;
+  }
+
+  void set_state(Index p, State s) {
+    if (is_handled(s)) {
+      if (unhandled_.erase(p) && cursor_ == p) cursor_ = successor(p);
+    } else {
+      unhandled_.insert(p);
+    }
+    state_[p] = s;
+  }
+
+  static bool holds(const std::vector<Index>& side, Index q) { return std::find(side.begin(), side.end(), q) != side.end(); }
+  int link_count(Index p) const { return (links_[p][0] != none) + (links_[p][1] != none); }
+  bool has_state(Index p, std::initializer_list<State> states) const {
+    return p != none && std::find(states.begin(), states.end(), state_[p]) != states.end();
+  }
+  // The link of q other than `from` (the next point along the curve).
+  Index onward(Index q, Index from) const { return links_[q][links_[q][0] == from ? 1 : 0]; }
+  int slot_of(Index q, Index p) const { return links_[q][0] == p ? 0 : 1; }
+
+  // ---- Neighbourhoods (increaseNHood, fitCircleAndOrderNeighbors) ------------------------
+  // Adds the next nearest point (the two nearest on the first visit) and refits; false if
+  // the neighbourhood cannot grow.
+  bool grow(Index p) {
+    const std::size_t wanted = state_[p] == State::initial ? 2 : 1;
+    if (nearest_[p].size() + wanted > static_cast<std::size_t>(options_.max_neighbors)) return false;
+    for (std::size_t i = 0; i < wanted; ++i) {
+      const Index q = streams_[p].next();
+      if (q == none) return false;
+      nearest_[p].push_back(q);
+      referrers_[q].push_back(p);
+    }
+    bool conforming = false;
+    Fitted_neighborhood(points_, p, nearest_[p]).order(sides_[p], conforming);
+    state_[p] = conforming ? State::conform : State::nonconform;  // both unhandled: no set change
+    return true;
+  }
+
+  // ---- Overlaps --------------------------------------------------------------------------
+  // determinePointOverlapSide: the farthest point q on side s of p that can take p as its
+  // curve neighbour: q holds p in its own neighbourhood and has a free slot (or is already
+  // linked to p).
+  Index overlap(Index p, int s) const {
+    for (auto q = sides_[p][s].rbegin(); q != sides_[p][s].rend(); ++q) {
+      if (!has_state(*q, {State::conform, State::leaf, State::manifold})) continue;
+      for (int j = 0; j < 2; ++j) {
+        if (!holds(sides_[*q][j], p)) continue;
+        const bool linked = links_[*q][0] == p || links_[*q][1] == p;
+        if (state_[*q] == State::manifold ? linked : (links_[*q][j] == none || links_[*q][j] == p)) return *q;
+      }
+    }
+    return none;
+  }
+
+  // doRemoveOverlap: unlinks p's side s; a partner that loses a link is unhandled again, and a
+  // sharp partner loses both its links.
+  void unlink(Index p, int s) {
+    const Index q = links_[p][s];
+    if (q == none) return;
+    links_[p][s] = none;
+    if (links_[q][slot_of(q, p)] == p) links_[q][slot_of(q, p)] = none;
+    if (has_state(q, {State::manifold, State::leaf})) {
+      set_state(q, State::conform);
+    } else if (state_[q] == State::sharp) {
+      set_state(q, State::nonconform);
+      for (int t = 0; t < 2; ++t) {
+        const Index r = links_[q][t];
+        if (r == none) continue;
+        links_[q][t] = none;
+        if (links_[r][slot_of(r, q)] == q) links_[r][slot_of(r, q)] = none;
+        if (state_[r] == State::manifold) set_state(r, State::conform);
+      }
     }
   }
 
-  bool chose(Index p, Index q) const { return choice_[p][0] == q || choice_[p][1] == q; }
-  int degree(Index p) const {
-    int d = 0;
-    for (const Index q : choice_[p]) d += q != none && alive_[q] && chose(q, p);
-    return d;
+  void unlink_side(Index p, int s) {  // removeOverlap
+    unlink(p, s);
+    affected_.insert(p);
+    if (state_[p] == State::manifold) set_state(p, State::conform);
   }
-  bool turned_down_a_chooser(Index p) const {
-    for (const Index q : containing_[p])  // only a point whose neighbourhood holds p can choose it
-      if (alive_[q] && chose(q, p) && !chose(p, q)) return true;
+
+  void unlink_all(Index p) {  // removeOverlaps
+    unlink(p, 0), unlink(p, 1);
+    affected_.insert(p);
+    if (has_state(p, {State::manifold, State::leaf})) set_state(p, State::conform);
+    else if (state_[p] == State::sharp) set_state(p, State::nonconform);
+  }
+
+  // determineConsistentPointSetInNhood: the points reached by following the curve from p
+  // through side s while it stays inside that side.
+  std::vector<Index> followed(Index p, int s) const {
+    std::vector<Index> result;
+    Index previous = p, current = links_[p][s];
+    while (current != none && holds(sides_[p][s], current) && !holds(result, current)) {
+      result.push_back(current);
+      const Index next = onward(current, previous);
+      previous = current, current = next;
+    }
+    return result;
+  }
+
+  // Whether a curve point on side s of p is not on the curve followed from p: the side
+  // holds pieces of another curve.
+  bool inconsistent(Index q, const std::vector<Index>& followed_points) const {
+    return !holds(followed_points, q) && has_state(q, {State::manifold, State::leaf, State::sharp});
+  }
+
+  void unlink_inconsistent(Index p, int s) {  // removeInconsistentPointSetInNhood
+    const std::vector<Index> consistent = followed(p, s);
+    for (const Index q : sides_[p][s])
+      if (inconsistent(q, consistent)) unlink_all(q);
+  }
+
+  // addRedundantPointsInOverlap: unhandled points strictly between p and its partner on
+  // side s, in both neighbourhoods.
+  std::vector<Index> redundant(Index p, int s) const {
+    const Index q = links_[p][s];
+    const auto before = [&](const std::vector<Index>& side, Index end) {
+      std::vector<Index> result;
+      for (const Index m : side) {
+        if (m == end) break;
+        if (unhandled_.contains(m)) result.push_back(m);
+      }
+      std::sort(result.begin(), result.end());
+      return result;
+    };
+    const std::vector<Index> mine = before(sides_[p][s], q), theirs = before(sides_[q][slot_of(q, p)], p);
+    std::vector<Index> both;
+    std::set_intersection(mine.begin(), mine.end(), theirs.begin(), theirs.end(), std::back_inserter(both));
+    return both;
+  }
+
+  // isInsideEdge: p lies between two linked curve points that are the nearest non-eliminated
+  // points on either side of p.
+  bool inside_edge(Index p) const {
+    for (const Index q : links_[p])
+      if (q != none && state_[q] == State::manifold) return false;
+    const auto curve_points = [&](int s) {
+      std::vector<Index> result;
+      for (const Index q : sides_[p][s])
+        if (has_state(q, {State::manifold, State::sharp})) result.push_back(q);
+      return result;
+    };
+    const std::vector<Index> left = curve_points(0), right = curve_points(1);
+    const auto nothing_before = [&](int s, Index end) {
+      for (const Index m : sides_[p][s]) {
+        if (m == end) return true;
+        if (state_[m] != State::eliminated && state_[m] != State::initial) return false;
+      }
+      return true;
+    };
+    for (const Index a : left) {
+      Index b = holds(right, links_[a][0]) ? links_[a][0] : holds(right, links_[a][1]) ? links_[a][1] : none;
+      if (b != none && nothing_before(0, a) && nothing_before(1, b)) return true;
+    }
     return false;
   }
 
-  void connect() {
-    std::vector<Index> check(n_), grow, kill, changed;
-    for (Index p = 0; p < n_; ++p) check[p] = p;
-    while (!check.empty()) {
-      std::sort(check.begin(), check.end());
-      check.erase(std::unique(check.begin(), check.end()), check.end());
-      grow.clear(), kill.clear(), changed.clear();
-      for (const Index p : check) {
-        if (!alive_[p] || degree(p) == 2) continue;
-        if (k_[p] < knn_[p].size())
-          grow.push_back(p);
-        else if (conforming_[p] && turned_down_a_chooser(p))
-          kill.push_back(p);
-      }
-      if (grow.empty() && kill.empty()) break;
-      for (const Index p : grow) {
-        containing_[knn_[p][k_[p]]].push_back(p);
-        ++k_[p];
-        refit(p);
-        changed.push_back(p);
-      }
-      for (const Index p : kill) alive_[p] = false;
-      for (const Index p : kill)
-        for (const Index q : containing_[p]) changed.push_back(q);
-      std::sort(changed.begin(), changed.end());
-      changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-      check.clear();
-      for (const Index p : changed) {
-        if (!alive_[p]) continue;
-        choose(p);
-        check.push_back(p);
-        check.insert(check.end(), containing_[p].begin(), containing_[p].end());
-        for (const Index q : choice_[p])
-          if (q != none) check.push_back(q);
-      }
-    }
-  }
+  // ---- Sharp corners (collectIntersectingSegmentsInNHood, isSharpPoint) ------------------
+  struct Segments {
+    std::vector<std::vector<Index>> open;  // each from its end inside the neighbourhood outwards
+    bool closed = false;                   // a curve passes through the neighbourhood
+  };
 
-  std::vector<std::array<Index, 2>> adjacency() const {
-    std::vector<std::array<Index, 2>> adjacent(n_, {none, none});
-    for (Index p = 0; p < n_; ++p) {
-      if (!alive_[p]) continue;
-      int d = 0;
-      for (const Index q : choice_[p])
-        if (q != none && alive_[q] && chose(q, p)) adjacent[p][d++] = q;
-    }
-    return adjacent;
-  }
-
-  // Sharp corners, then every connected point blended over the fits that hold it.
-  void denoise(const std::vector<std::array<Index, 2>>& adjacent, std::vector<Point>& out) const {
-    constexpr std::size_t reach = 8;
-    const auto walk = [&](Index p, Index first, std::vector<Index>& chain) {
-      chain.clear();
-      Index previous = p, current = first;
-      while (current != none && current != p && chain.size() < reach) {
-        chain.push_back(current);
-        const Index next = adjacent[current][0] == previous ? adjacent[current][1] : adjacent[current][0];
-        previous = current, current = next;
-      }
-    };
-    // The chain points 2, 4 and 8 steps away on both sides (as far as the chain goes and
-    // the two walks do not meet): a corner's legs are straight, so its angle is below the
-    // threshold at every scale, where a smooth but coarsely sampled bend opens up at the
-    // small ones. ends[p]: the pair at the largest scale reached.
-    constexpr std::array<std::size_t, 3> scales{2, 4, 8};
-    std::vector<std::array<Index, 2>> ends(n_, {none, none});
-    std::vector<char> candidate(n_, false), sharp(n_, false), frozen(n_, false);
-    std::vector<Index> left, right;
-    const double c = std::cos(options_.corner_angle * std::numbers::pi / 180);
-    for (Index p = 0; p < n_ && options_.corner_angle > 0; ++p) {
-      if (adjacent[p][1] == none) continue;
-      walk(p, adjacent[p][0], left);
-      walk(p, adjacent[p][1], right);
-      std::size_t steps = 0;
-      while (steps < left.size() && steps < right.size() &&
-             std::find(right.begin(), right.begin() + steps + 1, left[steps]) == right.begin() + steps + 1 &&
-             std::find(left.begin(), left.begin() + steps, right[steps]) == left.begin() + steps)
-        ++steps;
-      if (steps < scales[0]) continue;
-      bool below = true;
-      for (const std::size_t s : scales)
-        if (s <= steps) {
-          below = below && cosine_minus(points_[left[s - 1]], points_[p], points_[right[s - 1]], c) == CGAL::POSITIVE;
-          ends[p] = {left[s - 1], right[s - 1]};
-        }
-      candidate[p] = below;
-    }
-    {
-      for (Index p = 0; p < n_; ++p) {
-        if (!candidate[p]) continue;
-        bool smallest = true;
-        for (int s = 0; s < 2 && smallest; ++s) {
-          walk(p, adjacent[p][s], left);
-          for (const Index q : left) {
-            if (!candidate[q]) continue;
-            const CGAL::Sign cmp = compare_cosines(points_[ends[p][0]], points_[p], points_[ends[p][1]],
-                                                   points_[ends[q][0]], points_[q], points_[ends[q][1]]);
-            if (cmp == CGAL::NEGATIVE || (cmp == CGAL::ZERO && q < p)) smallest = false;
-          }
-        }
-        sharp[p] = smallest;
-      }
-      for (Index p = 0; p < n_; ++p)
-        if (sharp[p]) {
-          frozen[p] = true;
-          for (const Index q : adjacent[p])
-            if (q != none) frozen[q] = true;
-        }
-    }
-    // The chains (paths from an end, then cycles) of the connected points.
-    std::vector<std::vector<Index>> chains;
-    std::vector<char> closed;
-    {
-      std::vector<char> visited(n_, false);
-      const auto walk_chain = [&](Index start, bool cycle) {
-        std::vector<Index> chain{start};
-        visited[start] = true;
-        Index previous = start, current = adjacent[start][0];
-        while (current != none && !visited[current]) {
-          visited[current] = true;
-          chain.push_back(current);
-          const Index next = adjacent[current][0] == previous ? adjacent[current][1] : adjacent[current][0];
+  Segments segments(Index p) const {
+    Segments result;
+    const auto manifold = [&](Index q) { return state_[q] == State::manifold; };
+    if (std::none_of(sides_[p][0].begin(), sides_[p][0].end(), manifold) &&
+        std::none_of(sides_[p][1].begin(), sides_[p][1].end(), manifold))
+      return result;
+    std::vector<Index> inside;
+    for (int s = 0; s < 2; ++s) inside.insert(inside.end(), sides_[p][s].begin(), sides_[p][s].end());
+    std::sort(inside.begin(), inside.end());
+    const auto in = [&](Index q) { return std::binary_search(inside.begin(), inside.end(), q); };
+    std::vector<Index> starts;
+    for (const Index q : inside)
+      if (state_[q] == State::manifold) starts.push_back(q);
+    std::sort(starts.begin(), starts.end());
+    std::vector<bool> done(starts.size(), false);
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+      if (done[i]) continue;
+      const Index start = starts[i];
+      std::deque<Index> segment{start};
+      std::array<bool, 2> leaves{false, false};
+      for (int direction = 0; direction < 2; ++direction) {
+        Index previous = start, current = links_[start][direction];
+        std::size_t steps = 0;
+        while (current != none && current != start && in(current) && steps++ <= inside.size()) {
+          direction == 0 ? segment.push_back(current) : segment.push_front(current);
+          const auto known = std::lower_bound(starts.begin(), starts.end(), current);
+          if (known != starts.end() && *known == current) done[known - starts.begin()] = true;
+          const Index next = onward(current, previous);
           previous = current, current = next;
         }
-        chains.push_back(std::move(chain));
-        closed.push_back(cycle);
-      };
-      for (Index p = 0; p < n_; ++p)
-        if (!visited[p] && adjacent[p][0] != none && adjacent[p][1] == none) walk_chain(p, false);
-      for (Index p = 0; p < n_; ++p)
-        if (!visited[p] && adjacent[p][1] != none) walk_chain(p, true);
+        leaves[direction] = current != none && current != p && current != start && !in(current);
+      }
+      if (leaves[0] && leaves[1]) {
+        result.closed = true;
+      } else if (leaves[0] || leaves[1]) {
+        if (leaves[1]) std::reverse(segment.begin(), segment.end());
+        result.open.emplace_back(segment.begin(), segment.end());
+      }
     }
-    // Local spacing: the mean length of a point's edges (the unit of the blending weights).
-    std::vector<double> spacing(n_, 0);
-    for (Index p = 0; p < n_; ++p) {
-      double sum = 0;
-      int count = 0;
-      for (const Index q : adjacent[p])
-        if (q != none) sum += std::sqrt(squared_length(difference<double>(points_[q], points_[p]))), ++count;
-      if (count > 0) spacing[p] = sum / count;
+    return result;
+  }
+
+  // Two curve ends meet at p at a sharp corner: their curves leave p's neighbourhood within
+  // `sharp_angle` of each other as seen from p, and joining p to both ends crosses no curve
+  // edge in the neighbourhood.
+  bool sharp(Index p, const Segments& found) const {
+    std::vector<Index> inside{p};
+    for (int s = 0; s < 2; ++s) inside.insert(inside.end(), sides_[p][s].begin(), sides_[p][s].end());
+    std::array<Index, 2> outside{};
+    for (int i = 0; i < 2; ++i) {
+      const Index end = found.open[i].back();
+      outside[i] = holds(inside, links_[end][0]) ? links_[end][1] : links_[end][0];
+      if (outside[i] == none) return false;
     }
-    // Every non-sharp point's fit: the window of its chain neighbours up to w steps on each
-    // side (never past a sharp point), w among 2, 3, 4, 6, 8, 12, 16, chosen by generalised
-    // cross-validation, the residual variance per degree of freedom times m / (m - p),
-    // averaged over the point and its two chain neighbours on each side (one window's
-    // residual, with as few as 2 degrees of freedom, is too noisy a guide alone). Noise
-    // keeps the score falling as w grows; a bend the circle cannot follow makes it rise.
-    constexpr std::array<int, 7> widths{2, 3, 4, 6, 8, 12, 16};
-    constexpr std::ptrdiff_t pool = 2;
-    std::vector<Arc_fit> fits(n_);
-    std::vector<std::vector<std::pair<Index, int>>> windows(n_);  // (point, steps from the anchor)
-    std::vector<int> half(n_, 0);
-    std::vector<Index> members;
-    std::vector<std::pair<Index, int>> window;
-    for (std::size_t c = 0; c < chains.size(); ++c) {
-      const std::vector<Index>& chain = chains[c];
-      const auto m = static_cast<std::ptrdiff_t>(chain.size());
-      const auto build = [&](std::ptrdiff_t i, int w) {
-        window.assign(1, {chain[i], 0});
-        for (const int side : {-1, 1})
-          for (int step = 1; step <= w; ++step) {
-            std::ptrdiff_t at = i + side * step;
-            if (closed[c]) {
-              if (2 * step > m - 1 + (side > 0 && m % 2 == 0)) break;  // each point once
-              at = ((at % m) + m) % m;
-            } else if (at < 0 || at >= m) {
-              break;
-            }
-            window.emplace_back(chain[at], step);
-            if (sharp[chain[at]]) break;
-          }
-        members.clear();
-        for (const auto& [q, step] : window) members.push_back(q);
-      };
-      std::vector<std::array<double, widths.size()>> score(chain.size());
-      for (std::ptrdiff_t i = 0; i < m; ++i) {
-        score[i].fill(std::numeric_limits<double>::infinity());
-        if (sharp[chain[i]]) continue;
-        std::size_t previous_size = 0;
-        for (std::size_t k = 0; k < widths.size(); ++k) {
-          build(i, widths[k]);
-          if (window.size() == previous_size) break;  // the chain is exhausted
-          previous_size = window.size();
-          const Arc_fit fit = arc_fit(points_, points_[chain[i]], members);
-          if (fit.usable)
-            score[i][k] = fit.variance() * static_cast<double>(fit.m) / static_cast<double>(fit.m - fit.parameters);
+    const double cosine = std::cos(options_.sharp_angle * std::numbers::pi / 180);
+    if (cosine_minus(points_[outside[0]], points_[p], points_[outside[1]], cosine) == CGAL::NEGATIVE) return false;
+    for (const auto& segment : found.open) {
+      const Index end = segment.front();
+      const geometry::Kernel::Segment_2 joint(points_[p], points_[end]);
+      for (const Index a : inside) {
+        if (!has_state(a, {State::manifold, State::conform, State::leaf})) continue;
+        for (const Index b : links_[a])
+          if (has_state(b, {State::manifold, State::conform, State::leaf}) && a != end && b != end &&
+              CGAL::do_intersect(joint, geometry::Kernel::Segment_2(points_[a], points_[b])))
+            return false;
+      }
+    }
+    return true;
+  }
+
+  // ---- One visit ---------------------------------------------------------------------------
+  void visit(Index p) {
+    const State before = state_[p];
+    const Sides old_sides = sides_[p];
+    const int leaf_side = leaf_candidate_side(p);
+
+    if (!grow(p)) {
+      cannot_grow(p);
+    } else if (leaf_side >= 0 && sides_[p][1 - leaf_side].empty()) {
+      // A curve end whose grown neighbourhood reaches another curve: it stays an end.
+      const std::vector<Index> consistent = followed(p, leaf_side);
+      bool other_curve = false;
+      for (const Index q : sides_[p][leaf_side]) other_curve = other_curve || inconsistent(q, consistent);
+      if (other_curve) {
+        sides_[p] = old_sides;
+        set_state(p, State::leaf);
+        affected_.insert(p);
+        align_links(p);
+      }
+    }
+
+    if (state_[p] == State::conform) connect(p);
+
+    if (has_state(p, {State::conform, State::nonconform}) && inside_edge(p)) {
+      if (state_[p] == State::nonconform && before == State::conform) state_[p] = State::conform;
+      if (state_[p] == State::conform) unlink_all(p);
+      set_state(p, State::eliminated);
+      affected_.insert(p);
+    }
+
+    if (state_[p] == State::nonconform) join_at_sharp_corner(p, before);
+
+    restore_consistency();
+
+    if (state_[p] == State::nonconform && before == State::conform) {  // keep the old fit and its links
+      sides_[p] = old_sides;
+      state_[p] = State::conform;
+    }
+  }
+
+  // A conforming point with one link whose curve runs on through two more manifold points
+  // of that side: if its grown neighbourhood turns out to hold another curve, it is an end.
+  int leaf_candidate_side(Index p) const {
+    if (state_[p] != State::conform || link_count(p) != 1) return -1;
+    const int s = links_[p][0] != none ? 0 : 1;
+    Index previous = p, current = links_[p][s];
+    for (int count = 0; count < 2; ++count) {
+      const Index next = onward(current, previous);
+      if (!(next != none && state_[next] == State::manifold && holds(sides_[p][s], next))) return -1;
+      previous = current, current = next;
+    }
+    return s;
+  }
+
+  void cannot_grow(Index p) {
+    if (state_[p] == State::conform && link_count(p) > 0) {
+      // A curve end: it becomes a leaf, or hands the end on to the one non-conforming point
+      // beyond it.
+      const int s = links_[p][0] != none ? 0 : 1;
+      std::vector<Index> beyond;
+      for (const Index q : sides_[p][1 - s])
+        if (state_[q] == State::nonconform) beyond.push_back(q);
+      if (beyond.size() == 1 && links_[p][1 - s] == none) {
+        const Index q = beyond[0];
+        const int qs = holds(sides_[q][0], p) ? 0 : 1;
+        if (links_[q][qs] == none) {
+          links_[p][1 - s] = q, links_[q][qs] = p;
+          set_state(q, State::leaf), affected_.insert(q);
+          set_state(p, State::manifold), affected_.insert(p);
+          return;
         }
       }
-      for (std::ptrdiff_t i = 0; i < m; ++i) {
-        if (sharp[chain[i]]) continue;
-        double best = std::numeric_limits<double>::infinity();
-        std::size_t chosen = widths.size();
-        for (std::size_t k = 0; k < widths.size(); ++k) {
-          if (!std::isfinite(score[i][k])) continue;
-          double sum = 0;
-          int count = 0;
-          for (std::ptrdiff_t d = -pool; d <= pool; ++d) {
-            std::ptrdiff_t j = i + d;
-            if (closed[c])
-              j = ((j % m) + m) % m;
-            else if (j < 0 || j >= m)
-              continue;
-            if (std::isfinite(score[j][k])) sum += score[j][k], ++count;
-          }
-          if (sum / count < best) best = sum / count, chosen = k;  // ties: the smaller window
+      set_state(p, State::leaf), affected_.insert(p);
+      return;
+    }
+    // A non-conforming point with all its neighbourhood on one side, next to a curve end: it
+    // extends that curve as its new end.
+    if (state_[p] == State::nonconform && link_count(p) == 0 && sides_[p][0].empty() != sides_[p][1].empty()) {
+      const int s = sides_[p][0].empty() ? 1 : 0;
+      for (const Index q : sides_[p][s]) {
+        if (state_[q] == State::eliminated) continue;
+        if (state_[q] == State::conform && link_count(q) == 1) {
+          links_[q][links_[q][0] == none ? 0 : 1] = p;
+          links_[p][s] = q;
+          set_state(q, State::manifold), affected_.insert(q);
+          set_state(p, State::leaf), affected_.insert(p);
+          return;
         }
-        if (chosen == widths.size()) continue;
-        build(i, widths[chosen]);
-        fits[chain[i]] = arc_fit(points_, points_[chain[i]], members);
-        windows[chain[i]] = window, half[chain[i]] = widths[chosen];
+        break;
       }
     }
-    // Blending: each point moves by the weighted mean of its displacements onto the fits
-    // whose window holds it, weighted by a biweight window kernel (a fit is most accurate
-    // at its anchor) over the fit's residual variance, and by at most its own fit's RMS
-    // residual (its estimated noise): noise-free input, whose fits have residuals near 0,
-    // barely moves. Sharp points and their chain neighbours stay where they are.
-    std::vector<double> sx(n_, 0), sy(n_, 0), sw(n_, 0);
-    for (Index p = 0; p < n_; ++p) {
-      if (!fits[p].usable) continue;
-      for (const auto& [q, step] : windows[p]) {
-        if (frozen[q] || !(spacing[q] > 0)) continue;
-        const auto d = displacement(fits[p], points_[q]);
-        if (!d) continue;
-        const double t = static_cast<double>(step) / (half[p] + 1);
-        const double relative = fits[p].sigma() / spacing[q];
-        const double weight = (1 - t * t) * (1 - t * t) / (relative * relative + 1e-12);
-        if (!std::isfinite(weight)) continue;
-        sx[q] += weight * d->x, sy[q] += weight * d->y, sw[q] += weight;
+    if (link_count(p) > 0) unlink_all(p);
+    set_state(p, State::eliminated);
+  }
+
+  // Links each of p's sides to its overlap, drops links that are no overlap any more, and
+  // eliminates the points the new overlaps make redundant.
+  void connect(Index p) {
+    const std::array<Index, 2> wanted{overlap(p, 0), overlap(p, 1)};
+    for (int s = 0; s < 2; ++s) {
+      const Index q = links_[p][s];
+      if (q != none && q != wanted[0] && q != wanted[1]) unlink_side(p, s);
+    }
+    for (const Index q : wanted) {
+      if (q == none || q == links_[p][0] || q == links_[p][1]) continue;
+      const int s = links_[p][0] == none ? 0 : links_[p][1] == none ? 1 : -1;
+      const int qs = holds(sides_[q][0], p) ? 0 : 1;
+      if (s < 0 || links_[q][qs] != none) continue;
+      links_[p][s] = q, links_[q][qs] = p;
+      if (links_[p][1 - s] != none) set_state(p, State::manifold), affected_.insert(p);
+      if (links_[q][1 - qs] != none) set_state(q, State::manifold), affected_.insert(q);
+    }
+    align_links(p);
+    for (int s = 0; s < 2; ++s) {
+      if (links_[p][s] == none) continue;
+      for (const Index q : redundant(p, s)) {
+        if (has_state(q, {State::manifold, State::conform, State::sharp})) unlink_all(q);
+        set_state(q, State::eliminated);
       }
     }
-    for (Index x = 0; x < n_; ++x) {
-      if (!(sw[x] > 0) || frozen[x] || !fits[x].usable) continue;
-      double mx = sx[x] / sw[x], my = sy[x] / sw[x];
-      const double cap = fits[x].sigma(), length = std::sqrt(mx * mx + my * my);
-      if (!(length <= cap)) {
-        if (!(length > 0) || !(cap > 0) || !std::isfinite(length)) continue;
-        mx *= cap / length, my *= cap / length;
-      }
-      const Point moved(points_[x].x() + mx, points_[x].y() + my);
-      if (std::isfinite(moved.x()) && std::isfinite(moved.y())) out[x] = moved;
+    for (int s = 0; s < 2; ++s) {
+      if (links_[p][s] == none) continue;
+      unlink_inconsistent(p, s);
+      const Index q = links_[p][s];
+      if (q != none) unlink_inconsistent(q, slot_of(q, p));
     }
+    // A point with one overlap whose way to a second one is blocked by a conforming point
+    // that already links across p: p is the redundant one.
+    if (link_count(p) == 1) {
+      const int s = links_[p][0] != none ? 0 : 1;
+      for (const Index q : sides_[p][s]) {
+        if (q == links_[p][s]) break;
+        if (state_[q] != State::conform) continue;
+        if (link_count(q) == 1 && holds(sides_[p][1 - s], links_[q][links_[q][0] != none ? 0 : 1])) {
+          unlink_side(p, s);
+          set_state(p, State::eliminated);
+        }
+        break;
+      }
+    }
+  }
+
+  // Keeps link slot s on neighbourhood side s.
+  void align_links(Index p) {
+    const bool off = (links_[p][0] != none && !holds(sides_[p][0], links_[p][0])) ||
+                     (links_[p][1] != none && !holds(sides_[p][1], links_[p][1]));
+    if (off) std::swap(links_[p][0], links_[p][1]);
+  }
+
+  void join_at_sharp_corner(Index p, State before) {
+    const Segments found = segments(p);
+    if (found.closed || found.open.size() != 2 || !sharp(p, found)) return;
+    if (before == State::conform) {
+      state_[p] = State::conform;
+      unlink_all(p);
+    }
+    set_state(p, State::sharp);
+    affected_.insert(p);
+    for (int i = 0; i < 2; ++i) {
+      const Index end = found.open[i].front();
+      if (state_[end] != State::manifold) {
+        set_state(end, State::manifold);
+        affected_.insert(end);
+        links_[end][links_[end][0] == none ? 0 : 1] = p;
+      }
+      links_[p][i] = end;
+    }
+  }
+
+  // The authors' clean-up after each visit: every point whose neighbourhood holds an
+  // affected point re-checks its links, and drops them all if a link is off its side or
+  // its neighbourhood holds pieces of another curve.
+  void restore_consistency() {
+    while (!affected_.empty()) {
+      for (auto next = affected_.begin(); next != affected_.end();) {
+        const Index q = *next;
+        next = affected_.erase(next);
+        std::vector<Index> referrers = referrers_[q];
+        std::sort(referrers.begin(), referrers.end());
+        referrers.erase(std::unique(referrers.begin(), referrers.end()), referrers.end());
+        for (const Index r : referrers)
+          if (link_count(r) > 0 && !consistent(r)) unlink_all(r);
+      }
+    }
+  }
+
+  bool consistent(Index r) const {
+    if (state_[r] == State::sharp)
+      return has_state(links_[r][0], {State::manifold}) && has_state(links_[r][1], {State::manifold});
+    for (int s = 0; s < 2; ++s) {
+      const Index m = links_[r][s];
+      if (m != none && state_[m] != State::sharp && !holds(sides_[r][s], m)) return false;
+    }
+    for (int s = 0; s < 2; ++s) {
+      const Index m = links_[r][s];
+      if (m == none || state_[m] == State::sharp) continue;
+      const std::vector<Index> consistent_points = followed(r, s);
+      for (const Index q : sides_[r][s])
+        if (inconsistent(q, consistent_points)) return false;
+    }
+    return true;
   }
 
   std::span<const Point> points_;
   Fit_connect_options options_;
   std::size_t n_;
-  std::vector<std::vector<Index>> knn_;
-  std::vector<std::size_t> k_;
-  std::vector<std::array<std::vector<Index>, 2>> sides_;
-  std::vector<char> conforming_, alive_;
-  std::vector<std::array<Index, 2>> choice_;
-  std::vector<std::vector<Index>> containing_;  // containing_[q]: the points whose neighbourhood holds q
+  graphs::Delaunay_triangulation dt_;
+  std::vector<graphs::Nearest_neighbor_stream> streams_;
+  std::vector<State> state_;
+  std::vector<std::vector<Index>> nearest_;  // the neighbourhood, nearest first
+  std::vector<Sides> sides_;                 // ... ordered along its fit, nearest first
+  std::vector<std::array<Index, 2>> links_;  // curve neighbours, slot s on side s
+  std::vector<std::vector<Index>> referrers_;  // the points whose neighbourhood holds this one
+  std::set<Index> unhandled_;
+  std::set<Index> affected_;
+  Index cursor_ = none;
 };
 
 }  // namespace
 
-Reconstruction fit_connect_reconstruction(std::span<const Point> points, Fit_connect_options options) {
+Fitted_connectivity fit_connect_connectivity(std::span<const Point> points, const Fit_connect_options& options) {
   check_input(points, options);
+  if (points.size() < 3) {  // no fit: what there is, joined
+    Fitted_connectivity result;
+    for (Index p = 0; p < points.size(); ++p) result.representatives.push_back(p);
+    if (points.size() == 2) result.edges.emplace_back(0, 1);
+    return result;
+  }
   return Fit_connect(points, options).run();
+}
+
+Reconstruction fit_connect_reconstruction(std::span<const Point> points, const Fit_connect_options& options) {
+  check_input(points, options);
+  Reconstruction result;
+  if (points.size() < 3) {
+    result.points.assign(points.begin(), points.end());
+    if (points.size() == 2) result.edges.emplace_back(0, 1);
+    return result;
+  }
+  Fit_connect machine(points, options);
+  const Fitted_connectivity connectivity = machine.run();
+  result.points = machine.blended(connectivity.representatives);
+  std::vector<Index> number(points.size(), none);
+  for (std::size_t i = 0; i < connectivity.representatives.size(); ++i) number[connectivity.representatives[i]] = static_cast<Index>(i);
+  for (const auto& [a, b] : connectivity.edges) result.edges.emplace_back(number[a], number[b]);
+  result.edges = geometry::canonical_edges(std::move(result.edges));
+  return result;
 }
 
 Algorithm fit_connect_algorithm() {
   static const Parameter max_neighbors{.name = "max_neighbors",
                                        .type = Parameter_type::integer,
-                                       .default_value = 16,
+                                       .default_value = 1024,
                                        .minimum = 2,
-                                       .maximum = 64,
-                                       .meaning = "largest neighbourhood a point's arc fit grows to"};
-  static const Parameter corner_angle{.name = "corner_angle",
-                                      .type = Parameter_type::real,
-                                      .default_value = 100,
-                                      .minimum = 0,
-                                      .maximum = 180,
-                                      .meaning = "degrees; chain angles below it may be sharp corners (0: none)"};
+                                       .maximum = 65536,
+                                       .meaning = "largest neighbourhood a point's fit grows to"};
+  static const Parameter sharp_angle{.name = "sharp_angle",
+                                     .type = Parameter_type::real,
+                                     .default_value = 60,
+                                     .minimum = 0,
+                                     .maximum = 180,
+                                     .meaning = "degrees; two curve ends meeting within it form a sharp corner"};
+  static const Parameter blend{.name = "blend",
+                               .type = Parameter_type::integer,
+                               .default_value = 1,
+                               .minimum = 0,
+                               .maximum = 1,
+                               .meaning = "1: output points blended onto the fits; 0: at their input positions"};
   return {
       .name = "fit-connect",
       .title = "FitConnect",
       .reference = "Ohrhallinger, Wimmer 2018",
       .category = "Noisy Points Fitting",
-      .parameters = {max_neighbors, corner_angle},
+      .parameters = {max_neighbors, sharp_angle, blend},
       .capabilities = {.non_uniform = Support::yes, .noise = Support::yes, .outliers = Support::yes,
                        .manifold = Support::yes, .open = Support::yes, .multiple = Support::yes,
                        .sharp = Support::yes, .guarantee = true, .time_complexity = "O(n k^2)"},
       .condition = {.statement = "as HNN-Crust (survey's table; not certified for this implementation)"},
       .reconstruct = [](std::span<const Point> points, const Parameter_values& values) {
-        return fit_connect_reconstruction(
-            points, {.max_neighbors = static_cast<int>(values[max_neighbors]), .corner_angle = values[corner_angle]});
+        return fit_connect_reconstruction(points, {.max_neighbors = static_cast<int>(values[max_neighbors]),
+                                                   .sharp_angle = values[sharp_angle],
+                                                   .blend = values[blend] != 0});
       },
   };
 }

