@@ -58,6 +58,23 @@ def percent(flags):
     return 100.0 * sum(flags) / len(flags) if flags else None
 
 
+def wilson(flags, z=1.959964):
+    """(successes, n, low %, high %): the Wilson score interval, 95% by default."""
+    flags = [f for f in flags if f is not None]
+    n, k = len(flags), sum(flags)
+    if n == 0:
+        return 0, 0, None, None
+    p = k / n
+    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return k, n, 100 * max(0.0, centre - half), 100 * min(1.0, centre + half)
+
+
+def fmt_share(interval):
+    k, n, low, high = interval
+    return "–" if n == 0 else f"{100 * k / n:.0f}% [{low:.0f}–{high:.0f}] of {n}"
+
+
 def fmt(value, spec=".3g", suffix=""):
     return "–" if value is None else format(value, spec) + suffix
 
@@ -82,7 +99,7 @@ def ordered(values):
 
 
 COLUMNS = ("job suite input level algorithm params n_points epsilon rho uniformity status exact hausdorff rms normal_deviation "
-           "manifold components open_components closed_components unconnected runtime_ms picture message").split()
+           "manifold components open_components closed_components unconnected true_topology runtime_ms picture message").split()
 
 
 def read_rows(path):
@@ -125,6 +142,9 @@ def group_stats(rows):
         "rms": mean(number(r["rms"]) for r in ok),
         "hausdorff": mean(number(r["hausdorff"]) for r in ok),
         "manifold": percent(flag(r["manifold"]) for r in ok),
+        # A failed job on an input with ground truth has the wrong topology, as it is not exact.
+        "true_topology": wilson(flag(r["true_topology"]) if r["_ok"] else (False if r["_exact"] is False else None)
+                                for r in rows),
         "runtime": mean(number(r["runtime_ms"]) for r in ok),
         "failures": failures,
     }
@@ -394,7 +414,7 @@ def failures_text(counter):
 def summary_table(run, suite, rows):
     levels = sorted(ordered(r["level"] for r in rows), key=level_key)
     out = ["<table><tr><th>algorithm</th><th>level</th><th>jobs</th><th>exact</th><th>mean RMS</th>"
-           "<th>mean Hausdorff</th><th>manifold</th><th>failures</th></tr>"]
+           "<th>mean Hausdorff</th><th>manifold</th><th>true topology</th><th>failures</th></tr>"]
     for a in run.algorithms:
         groups = [(lv, [r for r in rows if r["algorithm"] == a and r["level"] == lv]) for lv in levels]
         groups = [(lv, g) for lv, g in groups if g]
@@ -409,10 +429,13 @@ def summary_table(run, suite, rows):
             out.append(f"<tr>{head}<td>{esc(lv or '–')}</td><td class=n>{s['jobs']}</td>"
                        f"<td class=n>{fmt(s['exact'], '.0f', '%')}</td><td class=n>{fmt(s['rms'])}</td>"
                        f"<td class=n>{fmt(s['hausdorff'])}</td><td class=n>{fmt(s['manifold'], '.0f', '%')}</td>"
+                       f"<td class=n>{esc(fmt_share(s['true_topology']))}</td>"
                        f"<td class='n{bad}'>{esc(failures_text(s['failures']))}</td></tr>")
     out.append("</table><p class=note>exact: share of jobs reconstructed exactly, where a failed job on an input "
                "with ground truth counts as not exact; RMS, Hausdorff and manifold: over ok jobs; RMS and Hausdorff "
-               "are distances to the true curve in units of its bounding-box diagonal.</p>")
+               "are distances to the true curve in units of its bounding-box diagonal; true topology: share of jobs "
+               "with ground truth whose output is a manifold with the truth's closed and open components (points "
+               "may be dropped or moved), with its Wilson 95% interval and the number of jobs.</p>")
     return "".join(out)
 
 

@@ -142,6 +142,14 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
     row[Column::open_components] = std::to_string(t.open_components);
     row[Column::closed_components] = std::to_string(t.closed_components);
     row[Column::unconnected] = std::to_string(t.unconnected);
+    // The survey's question for noisy input: one manifold curve per true curve, closed
+    // where the truth is closed, whatever the points (denoising algorithms drop some).
+    if (input.truth) {
+      const geometry::Curve_topology truth = geometry::curve_topology(input.points.size(), *input.truth);
+      const bool same = t.manifold && t.components == truth.components && t.closed_components == truth.closed_components &&
+                        t.open_components == truth.open_components;
+      row[Column::true_topology] = same ? "1" : "0";
+    }
     // A picture of more points than a screen has pixels across shows nothing but costs
     // megabytes, and a browser seconds: large inputs (the runtime suite) get none.
     const bool wanted = options.pictures == Pictures::all || (options.pictures == Pictures::failures && evaluation.exact != true);

@@ -22,7 +22,11 @@
 #include <vector>
 
 #include "algorithms/registry.h"
+#include "geometry/curves/analytic_curves.h"
 #include "geometry/io/point_io.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/sampling/sampling_noise.h"
 
 namespace curvebench::algorithms {
 namespace {
@@ -149,6 +153,29 @@ TEST(NoisyConformance, FishThinsToFewRepresentatives) {
     EXPECT_LE(output.points.size(), 60u) << algorithm << " (the authors' program keeps 41)";
     EXPECT_EQ(output.edges.size(), output.points.size()) << algorithm << ": one closed curve";
   }
+}
+
+// The survey's noise models at their heaviest levels in the benchmark (lfs noise delta 0.5,
+// uniform noise 3% of the diagonal) on 20 smooth closed curves at epsilon 0.3: one closed
+// curve on at least 19 (the benchmark's noisy and lfsnoise suites measure the rate on 30
+// curves per level, with intervals).
+TEST(NoisyConformance, OneClosedCurveOnSmoothCurvesWithHeavyNoise) {
+  for (const std::string algorithm : {"fit-connect", "stretch-denoise"})
+    for (const bool lfs_noise : {true, false}) {
+      int closed = 0;
+      for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        const geometry::Local_feature_size lfs(geometry::random_fourier_curve(seed));
+        const geometry::Sample clean = geometry::safe_epsilon_sampling(lfs, 0.3, geometry::default_minimum_lfs(lfs));
+        const geometry::Sample noisy =
+            lfs_noise ? geometry::with_lfs_noise(lfs, clean, 0.5, seed) : geometry::with_uniform_noise(clean, 0.03, seed);
+        const Reconstruction output = reconstruct(*find_algorithm(algorithm), noisy.points);
+        const Shape shape = shape_of(output.points.size(), output.edges);
+        closed += shape.closed == 1 && shape.open == 0 && shape.isolated == 0 && shape.max_degree == 2;
+      }
+      std::cout << algorithm << (lfs_noise ? ", lfs noise 0.5: " : ", uniform noise 0.03: ") << closed
+                << " of 20 one closed curve\n";
+      EXPECT_GE(closed, 19) << algorithm << (lfs_noise ? " lfs noise" : " uniform noise");
+    }
 }
 
 }  // namespace

@@ -208,6 +208,11 @@ TEST(Run, SmokeSuiteRowsAndResume) {
   EXPECT_EQ(rows[0][Column::closed_components], "1");
   EXPECT_EQ(rows[1][Column::exact], "0");
   EXPECT_EQ(rows[1][Column::open_components], "1");
+  // True topology: one closed curve, as the circle is; the EMST's path is not.
+  EXPECT_EQ(rows[0][Column::true_topology], "1");
+  EXPECT_EQ(rows[1][Column::true_topology], "0");
+  for (const Result_row& row : rows)
+    if (row[Column::exact] == "1") EXPECT_EQ(row[Column::true_topology], "1") << "exact implies the true topology";
   EXPECT_TRUE(std::filesystem::exists(options.output / "results.json"));
 
   // Without --resume an existing run is not overwritten; with it, nothing is left to do.

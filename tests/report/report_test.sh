@@ -146,4 +146,18 @@ check "make_report succeeds on failures only" "${make_report[@]}" "$work/failure
 check "both failures are listed" test "$(count '<tr class="nonok">' "$work/failures/report.html")" -eq 2
 check "check_report passes on a report of failures" "$check_report" "$work/failures"
 
+# ---- the Wilson score interval against published values (Newcombe 1998, method 3: 81 of
+# 263 gives 25.53 to 36.62 %; 15 of 148 gives 6.24 to 16.05 %) and its edge cases
+wilson() {  # wilson K N LOW HIGH: the interval of K of N, to 0.05 percentage points
+  (cd "$root/bench/report" && /usr/bin/python3 -c "
+import sys, make_report
+k, n, low, high = make_report.wilson([True] * $1 + [False] * ($2 - $1))
+sys.exit(not (k == $1 and n == $2 and abs(low - $3) < 0.05 and abs(high - $4) < 0.05))")
+}
+check "Wilson 81 of 263" wilson 81 263 25.53 36.62
+check "Wilson 15 of 148" wilson 15 148 6.24 16.05
+check "Wilson 0 of 10 starts at 0" wilson 0 10 0 27.8
+check "Wilson 10 of 10 ends at 100" wilson 10 10 72.2 100
+check "Wilson of nothing is empty" /usr/bin/python3 -c "import sys; sys.path.insert(0, '$root/bench/report'); import make_report; sys.exit(make_report.wilson([]) != (0, 0, None, None))"
+
 finish
