@@ -59,21 +59,36 @@ struct Fit {
   NT w, cx, cy;
 };
 
+// The sums of the normal equations, relative to p: a neighbourhood that grows by a point
+// adds its terms, in the same order as a sum from scratch would, so the result is the same.
 template <class NT>
-Fit<NT> kasa_fit(std::span<const Point> points, const Point& p, std::span<const Index> members) {
-  NT sxx(0), sxy(0), syy(0), sx(0), sy(0), sxz(0), syz(0), sz(0);
-  const NT s1(static_cast<double>(members.size() + 1));
-  for (const Index m : members) {
-    const Vector2<NT> u = difference<NT>(points[m], p);
+struct Kasa_sums {
+  NT sxx{0}, sxy{0}, syy{0}, sx{0}, sy{0}, sxz{0}, syz{0}, sz{0};
+  std::size_t count = 1;  // p itself, at the origin
+
+  void add(const Point& x, const Point& p) {
+    const Vector2<NT> u = difference<NT>(x, p);
     const NT z = u.x * u.x + u.y * u.y;
     sxx = sxx + u.x * u.x, sxy = sxy + u.x * u.y, syy = syy + u.y * u.y;
     sx = sx + u.x, sy = sy + u.y;
     sxz = sxz + u.x * z, syz = syz + u.y * z, sz = sz + z;
+    ++count;
   }
-  const NT det = sxx * (syy * s1 - sy * sy) - sxy * (sxy * s1 - sy * sx) + sx * (sxy * sy - syy * sx);
-  const NT det1 = sxz * (syy * s1 - sy * sy) - sxy * (syz * s1 - sy * sz) + sx * (syz * sy - syy * sz);
-  const NT det2 = sxx * (syz * s1 - sz * sy) - sxz * (sxy * s1 - sy * sx) + sx * (sxy * sz - syz * sx);
-  return {det + det, det1, det2};
+
+  Fit<NT> fit() const {
+    const NT s1(static_cast<double>(count));
+    const NT det = sxx * (syy * s1 - sy * sy) - sxy * (sxy * s1 - sy * sx) + sx * (sxy * sy - syy * sx);
+    const NT det1 = sxz * (syy * s1 - sy * sy) - sxy * (syz * s1 - sy * sz) + sx * (syz * sy - syy * sz);
+    const NT det2 = sxx * (syz * s1 - sz * sy) - sxz * (sxy * s1 - sy * sx) + sx * (sxy * sz - syz * sx);
+    return {det + det, det1, det2};
+  }
+};
+
+template <class NT>
+Fit<NT> kasa_fit(std::span<const Point> points, const Point& p, std::span<const Index> members) {
+  Kasa_sums<NT> sums;
+  for (const Index m : members) sums.add(points[m], p);
+  return sums.fit();
 }
 
 template <class NT>
@@ -94,9 +109,12 @@ CGAL::Sign root_difference_sign(CGAL::Sign y, CGAL::Sign x, const Squared& squar
 // One point's neighbourhood (p and its k nearest) ordered along its fit. Member 0 is p.
 class Fitted_neighborhood {
  public:
-  Fitted_neighborhood(std::span<const Point> points, Index p, std::span<const Index> neighbors)
+  // `approximate_sums`: the neighbourhood's sums in Error_bounded_double, if the caller
+  // keeps them (a growing neighbourhood), else they are summed here.
+  Fitted_neighborhood(std::span<const Point> points, Index p, std::span<const Index> neighbors,
+                      const Kasa_sums<Error_bounded_double>* approximate_sums = nullptr)
       : points_(points), p_(p), neighbors_(neighbors),
-        approx_(kasa_fit<Error_bounded_double>(points, points[p], neighbors)) {
+        approx_(approximate_sums ? approximate_sums->fit() : kasa_fit<Error_bounded_double>(points, points[p], neighbors)) {
     approx_radial_.reserve(neighbors.size() + 1);
     approx_radial_.push_back(radial(approx_, Vector2<Error_bounded_double>{0.0, 0.0}));
     for (const Index m : neighbors) approx_radial_.push_back(radial(approx_, difference<Error_bounded_double>(points[m], points[p])));
@@ -107,29 +125,40 @@ class Fitted_neighborhood {
   }
 
   // Sorts the members into the two sides of p, each nearest to p along the fit first, and
-  // tells whether p is conforming.
-  void order(std::array<std::vector<Index>, 2>& sides, bool& conforming) const {
-    std::array<std::vector<std::size_t>, 2> members;  // member numbers, 1-based
-    for (std::size_t j = 1; j <= neighbors_.size(); ++j) {
+  // tells whether p is conforming. `guess` is a guess of the members' order along the fit
+  // (member numbers, 1-based; the last fit's order, when a neighbourhood grows by a point):
+  // it makes the sort nearly linear, and is replaced by this fit's order.
+  void order(std::vector<std::uint32_t>& guess, std::array<std::vector<Index>, 2>& sides, bool& conforming) const {
+    // Members the guess lacks (new ones) go to its end, then all are sorted by the angle in
+    // double (insertion sort: a grown neighbourhood's order barely changes), each side is
+    // checked pair by adjacent pair with the exact order, and only a side with a pair out of
+    // order is sorted again by the exact order alone. The result is the exact order either way.
+    std::vector<bool> listed(neighbors_.size() + 1, false);
+    for (const std::uint32_t j : guess) listed[j] = true;
+    for (std::uint32_t j = 1; j <= neighbors_.size(); ++j)
+      if (!listed[j]) guess.push_back(j);
+    std::vector<std::pair<double, std::uint32_t>> keyed;
+    keyed.reserve(guess.size());
+    for (const std::uint32_t j : guess) keyed.emplace_back(approximate_angle(j), j);
+    std::size_t moves = 0;  // a guess far off (the fit turned over) falls back to a full sort
+    for (std::size_t i = 1; i < keyed.size() && moves <= 8 * keyed.size(); ++i)
+      for (std::size_t k = i; k > 0 && keyed[k].first < keyed[k - 1].first; --k, ++moves) std::swap(keyed[k], keyed[k - 1]);
+    if (moves > 8 * keyed.size())
+      std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::array<std::vector<std::size_t>, 2> members;
+    for (const auto& [key, j] : keyed) {
       const int s = side(j);
       if (s >= 0) members[s].push_back(j);
     }
+    std::reverse(members[0].begin(), members[0].end());
     for (int s = 0; s < 2; ++s) {
-      // Sorted by the angle in double first, which is cheap, then checked pair by adjacent
-      // pair with the exact order; only if a pair is out of order is the side sorted again
-      // by the exact order alone. The result is the exact order either way.
-      std::vector<std::pair<double, std::size_t>> keyed;
-      for (const std::size_t j : members[s]) keyed.emplace_back(approximate_angle(j), j);
-      std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
-        return a.first != b.first ? a.first < b.first : a.second < b.second;
-      });
-      if (s == 0) std::reverse(keyed.begin(), keyed.end());
-      for (std::size_t i = 0; i < keyed.size(); ++i) members[s][i] = keyed[i].second;
       const auto exact_before = [&](std::size_t a, std::size_t b) { return before(s, a, b); };
       if (std::adjacent_find(members[s].begin(), members[s].end(),
                              [&](std::size_t a, std::size_t b) { return !exact_before(a, b); }) != members[s].end())
         std::sort(members[s].begin(), members[s].end(), exact_before);
     }
+    guess.assign(members[0].rbegin(), members[0].rend());
+    guess.insert(guess.end(), members[1].begin(), members[1].end());
     for (int s = 0; s < 2; ++s) {
       sides[s].clear();
       for (const std::size_t j : members[s]) sides[s].push_back(neighbors_[j - 1]);
@@ -142,8 +171,8 @@ class Fitted_neighborhood {
  private:
   const Point& point(std::size_t j) const { return j == 0 ? points_[p_] : points_[neighbors_[j - 1]]; }
 
-  // Member j's angle around the fit's centre from p's direction, in (-pi, pi], in double:
-  // only a sort key (collinear neighbourhoods: the position along the line).
+  // Member j's angle around the fit's centre from p's direction, in double: only a sort key
+  // (collinear neighbourhoods: the position along the line).
   double approximate_angle(std::size_t j) const {
     if (collinear_) {
       const double dx = point(j).x() - points_[p_].x(), dy = point(j).y() - points_[p_].y();
@@ -153,7 +182,11 @@ class Fitted_neighborhood {
     const Vector2<Error_bounded_double>& a = approx_radial_[0];
     const Vector2<Error_bounded_double>& b = approx_radial_[j];
     const double ax = a.x.value(), ay = a.y.value(), bx = b.x.value(), by = b.y.value();
-    return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+    // A pseudo-angle, increasing with the angle on (-pi, pi] but cheaper than atan2.
+    const double sine = ax * by - ay * bx, cosine = ax * bx + ay * by, size = std::abs(sine) + std::abs(cosine);
+    if (!(size > 0)) return 0;
+    const double t = sine / size;  // in [-1, 1]
+    return cosine >= 0 ? t : (sine >= 0 ? 2 - t : -2 - t);
   }
 
   // Sign of a polynomial of the fit: first from the cached approximations of the radial
@@ -458,7 +491,7 @@ class Fit_connect {
  public:
   Fit_connect(std::span<const Point> points, const Fit_connect_options& options)
       : points_(points), options_(options), n_(points.size()), dt_(points), state_(n_, State::initial),
-        nearest_(n_), sides_(n_), links_(n_, {none, none}), referrers_(n_) {
+        nearest_(n_), sides_(n_), fit_order_(n_), sums_(n_), links_(n_, {none, none}), referrers_(n_), mark_(n_, 0) {
     streams_.reserve(n_);
     for (Index p = 0; p < n_; ++p) streams_.emplace_back(dt_, p);
   }
@@ -557,9 +590,10 @@ class Fit_connect {
       if (q == none) return false;
       nearest_[p].push_back(q);
       referrers_[q].push_back(p);
+      sums_[p].add(points_[q], points_[p]);
     }
     bool conforming = false;
-    Fitted_neighborhood(points_, p, nearest_[p]).order(sides_[p], conforming);
+    Fitted_neighborhood(points_, p, nearest_[p], &sums_[p]).order(fit_order_[p], sides_[p], conforming);
     state_[p] = conforming ? State::conform : State::nonconform;  // both unhandled: no set change
     return true;
   }
@@ -690,19 +724,22 @@ class Fit_connect {
     bool closed = false;                   // a curve passes through the neighbourhood
   };
 
-  Segments segments(Index p) const {
+  Segments segments(Index p) {
     Segments result;
     const auto manifold = [&](Index q) { return state_[q] == State::manifold; };
     if (std::none_of(sides_[p][0].begin(), sides_[p][0].end(), manifold) &&
         std::none_of(sides_[p][1].begin(), sides_[p][1].end(), manifold))
       return result;
-    std::vector<Index> inside;
-    for (int s = 0; s < 2; ++s) inside.insert(inside.end(), sides_[p][s].begin(), sides_[p][s].end());
-    std::sort(inside.begin(), inside.end());
-    const auto in = [&](Index q) { return std::binary_search(inside.begin(), inside.end(), q); };
+    if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;  // after 2^32 calls
+    const std::uint32_t stamp = stamp_;  // mark_[q] == stamp: q is in p's neighbourhood
+    std::size_t inside = 0;
     std::vector<Index> starts;
-    for (const Index q : inside)
-      if (state_[q] == State::manifold) starts.push_back(q);
+    for (int s = 0; s < 2; ++s)
+      for (const Index q : sides_[p][s]) {
+        mark_[q] = stamp, ++inside;
+        if (state_[q] == State::manifold) starts.push_back(q);
+      }
+    const auto in = [&](Index q) { return q != none && mark_[q] == stamp; };
     std::sort(starts.begin(), starts.end());
     std::vector<bool> done(starts.size(), false);
     for (std::size_t i = 0; i < starts.size(); ++i) {
@@ -713,7 +750,7 @@ class Fit_connect {
       for (int direction = 0; direction < 2; ++direction) {
         Index previous = start, current = links_[start][direction];
         std::size_t steps = 0;
-        while (current != none && current != start && in(current) && steps++ <= inside.size()) {
+        while (current != none && current != start && in(current) && steps++ <= inside) {
           direction == 0 ? segment.push_back(current) : segment.push_front(current);
           const auto known = std::lower_bound(starts.begin(), starts.end(), current);
           if (known != starts.end() && *known == current) done[known - starts.begin()] = true;
@@ -971,11 +1008,15 @@ class Fit_connect {
   std::vector<State> state_;
   std::vector<std::vector<Index>> nearest_;  // the neighbourhood, nearest first
   std::vector<Sides> sides_;                 // ... ordered along its fit, nearest first
+  std::vector<std::vector<std::uint32_t>> fit_order_;  // ... all along the fit (member numbers)
+  std::vector<Kasa_sums<Error_bounded_double>> sums_;  // ... its fit's sums
   std::vector<std::array<Index, 2>> links_;  // curve neighbours, slot s on side s
   std::vector<std::vector<Index>> referrers_;  // the points whose neighbourhood holds this one
   std::set<Index> unhandled_;
   std::set<Index> affected_;
   Index cursor_ = none;
+  std::vector<std::uint32_t> mark_;  // scratch marks for segments(), see stamp_
+  std::uint32_t stamp_ = 0;
 };
 
 }  // namespace
