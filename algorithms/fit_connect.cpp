@@ -15,6 +15,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "geometry/exact_sign.h"
@@ -197,12 +198,25 @@ class Fitted_neighborhood {
   CGAL::Sign sign(const Value& value) const {
     const auto approx_r = [&](std::size_t j) -> const Vector2<Error_bounded_double>& { return approx_radial_[j]; };
     return geometry::exact_sign(value(std::type_identity<Error_bounded_double>{}, approx_r), [&]<class NT>(std::type_identity<NT> type) {
-      const Fit<NT> fit = kasa_fit<NT>(points_, points_[p_], neighbors_);
-      const auto r = [&](std::size_t j) {
-        return radial(fit, j == 0 ? Vector2<NT>{NT(0), NT(0)} : difference<NT>(point(j), points_[p_]));
-      };
-      return value(type, r);
+      const std::vector<Vector2<NT>>& radials = this->radials<NT>();
+      return value(type, [&](std::size_t j) -> const Vector2<NT>& { return radials[j]; });
     });
+  }
+
+  // Every member's radial vector in NT (intervals or exact), computed once per fit when a
+  // sign first needs it: degenerate neighbourhoods (cocircular, collinear runs) need it
+  // for nearly every comparison, and a fit costs O(k).
+  template <class NT>
+  const std::vector<Vector2<NT>>& radials() const {
+    std::optional<std::vector<Vector2<NT>>>& cache = std::get<std::optional<std::vector<Vector2<NT>>>>(radial_caches_);
+    if (!cache) {
+      const Fit<NT> fit = kasa_fit<NT>(points_, points_[p_], neighbors_);
+      cache.emplace();
+      cache->reserve(neighbors_.size() + 1);
+      cache->push_back(radial(fit, Vector2<NT>{NT(0), NT(0)}));
+      for (const Index m : neighbors_) cache->push_back(radial(fit, difference<NT>(points_[m], points_[p_])));
+    }
+    return *cache;
   }
 
   // 1 (after p), 0 (before p), or -1 (cannot be ordered: on the fit centre, or the centre
@@ -272,6 +286,9 @@ class Fitted_neighborhood {
   std::span<const Index> neighbors_;
   Fit<Error_bounded_double> approx_;
   std::vector<Vector2<Error_bounded_double>> approx_radial_;  // member j's, j = 0 is p
+  mutable std::tuple<std::optional<std::vector<Vector2<CGAL::Interval_nt_advanced>>>,
+                     std::optional<std::vector<Vector2<geometry::Exact_number>>>>
+      radial_caches_;
   bool collinear_ = false;
 };
 
