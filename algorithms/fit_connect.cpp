@@ -120,7 +120,7 @@ class Fitted_neighborhood {
     approx_radial_.push_back(radial(approx_, Vector2<Error_bounded_double>{0.0, 0.0}));
     for (const Index m : neighbors) approx_radial_.push_back(radial(approx_, difference<Error_bounded_double>(points[m], points[p])));
     const CGAL::Sign w = geometry::exact_sign(approx_.w, [&]<class NT>(std::type_identity<NT>) {
-      return kasa_fit<NT>(points_, points_[p_], neighbors_).w;
+      return fitted<NT>().fit.w;
     });
     collinear_ = w == CGAL::ZERO;
   }
@@ -178,7 +178,7 @@ class Fitted_neighborhood {
     if (collinear_) {
       const double dx = point(j).x() - points_[p_].x(), dy = point(j).y() - points_[p_].y();
       const double ux = point(1).x() - points_[p_].x(), uy = point(1).y() - points_[p_].y();
-      return std::abs(dx * ux + dy * uy) * (dx * ux + dy * uy >= 0 ? 1 : -1);
+      return dx * ux + dy * uy;
     }
     const Vector2<Error_bounded_double>& a = approx_radial_[0];
     const Vector2<Error_bounded_double>& b = approx_radial_[j];
@@ -198,23 +198,28 @@ class Fitted_neighborhood {
   CGAL::Sign sign(const Value& value) const {
     const auto approx_r = [&](std::size_t j) -> const Vector2<Error_bounded_double>& { return approx_radial_[j]; };
     return geometry::exact_sign(value(std::type_identity<Error_bounded_double>{}, approx_r), [&]<class NT>(std::type_identity<NT> type) {
-      const std::vector<Vector2<NT>>& radials = this->radials<NT>();
+      const std::vector<Vector2<NT>>& radials = fitted<NT>().radials;
       return value(type, [&](std::size_t j) -> const Vector2<NT>& { return radials[j]; });
     });
   }
 
-  // Every member's radial vector in NT (intervals or exact), computed once per fit when a
-  // sign first needs it: degenerate neighbourhoods (cocircular, collinear runs) need it
-  // for nearly every comparison, and a fit costs O(k).
+  // The fit and every member's radial vector in NT (intervals or exact), computed once
+  // when a sign first needs them: degenerate neighbourhoods (cocircular, collinear runs)
+  // need them for nearly every comparison, and a fit costs O(k).
   template <class NT>
-  const std::vector<Vector2<NT>>& radials() const {
-    std::optional<std::vector<Vector2<NT>>>& cache = std::get<std::optional<std::vector<Vector2<NT>>>>(radial_caches_);
+  struct Fitted {
+    Fit<NT> fit;
+    std::vector<Vector2<NT>> radials;  // member j's, j = 0 is p
+  };
+
+  template <class NT>
+  const Fitted<NT>& fitted() const {
+    std::optional<Fitted<NT>>& cache = std::get<std::optional<Fitted<NT>>>(exact_caches_);
     if (!cache) {
-      const Fit<NT> fit = kasa_fit<NT>(points_, points_[p_], neighbors_);
-      cache.emplace();
-      cache->reserve(neighbors_.size() + 1);
-      cache->push_back(radial(fit, Vector2<NT>{NT(0), NT(0)}));
-      for (const Index m : neighbors_) cache->push_back(radial(fit, difference<NT>(points_[m], points_[p_])));
+      cache.emplace(Fitted<NT>{kasa_fit<NT>(points_, points_[p_], neighbors_), {}});
+      cache->radials.reserve(neighbors_.size() + 1);
+      cache->radials.push_back(radial(cache->fit, Vector2<NT>{NT(0), NT(0)}));
+      for (const Index m : neighbors_) cache->radials.push_back(radial(cache->fit, difference<NT>(points_[m], points_[p_])));
     }
     return *cache;
   }
@@ -286,14 +291,13 @@ class Fitted_neighborhood {
   std::span<const Index> neighbors_;
   Fit<Error_bounded_double> approx_;
   std::vector<Vector2<Error_bounded_double>> approx_radial_;  // member j's, j = 0 is p
-  mutable std::tuple<std::optional<std::vector<Vector2<CGAL::Interval_nt_advanced>>>,
-                     std::optional<std::vector<Vector2<geometry::Exact_number>>>>
-      radial_caches_;
+  mutable std::tuple<std::optional<Fitted<CGAL::Interval_nt_advanced>>, std::optional<Fitted<geometry::Exact_number>>>
+      exact_caches_;
   bool collinear_ = false;
 };
 
 // ---- Output constructions (double) ------------------------------------------------------
-// Circle fits over chain windows, for the denoised positions only. Each fit works in local
+// Circle (or line) fits over a neighbourhood, for the blended positions only. Each fit works in local
 // coordinates: translated to its anchor and scaled by a power of two to unit size, so the
 // arithmetic neither overflows nor underflows and commutes exactly with scaling the input
 // by a power of two.
@@ -307,9 +311,6 @@ struct Arc_fit {
   double dx = 0, dy = 0;            // line: through the centroid, unit direction
   double s2 = 0;                    // residual variance per degree of freedom (local units)
   std::size_t m = 0;                // points fitted
-  int parameters = 0;               // 3 circle, 2 line
-  double variance() const { return std::ldexp(s2, 2 * e); }      // absolute units
-  double sigma() const { return std::ldexp(std::sqrt(s2), e); }  // absolute units
 };
 
 // Solves the symmetric 3x3 system a x = b by Gaussian elimination with partial pivoting.
@@ -370,7 +371,7 @@ Arc_fit arc_fit(std::span<const Point> points, const Point& anchor, std::span<co
     line_sse += d * d;
   }
   const double line_s2 = line_sse / (count - 2);
-  fit.line = true, fit.parameters = 2, fit.s2 = line_s2, fit.usable = std::isfinite(line_s2);
+  fit.line = true, fit.s2 = line_s2, fit.usable = std::isfinite(line_s2);
   // The circle: Kasa (x^2 + y^2 + D x + E y + F = 0 in least squares), then Gauss-Newton on
   // the geometric distances, kept only while it lowers their sum of squares.
   std::array<double, 3> kasa{};
@@ -411,7 +412,7 @@ Arc_fit arc_fit(std::span<const Point> points, const Point& anchor, std::span<co
   if (!(r < 1e4)) return fit;
   const double circle_s2 = best / (count - 3);
   if (fit.m >= 5 && circle_s2 < line_s2) {
-    fit.line = false, fit.parameters = 3, fit.s2 = circle_s2;
+    fit.line = false, fit.s2 = circle_s2;
     fit.cx = cx, fit.cy = cy, fit.r = r;
   }
   return fit;
