@@ -1,12 +1,12 @@
 // StretchDenoise (Ohrhallinger, Wimmer 2018, Pacific Graphics; survey, "Noisy Points
 // Fitting" and "Robustness to Noise"): FitConnect's pass thins the noisy points to chains
-// of representative points (exact predicates); then each chain's vertices move along their normals, within their noise
-// cut-off, minimising squared turning angles plus a local inside/outside balance
-// (banded Levenberg-Marquardt with an active set for the bounds). Deviations from the
-// authors' code (quadratic instead of circle fits,
-// a local soft balance instead of one equality per line-fitted run, exact angles by
-// iterated LM instead of one linearised solve, a small fidelity term, own banded solver
-// instead of Eigen) are listed with their reasons in stretch_denoise.h.
+// of representative points (exact predicates); then each chain's vertices move along
+// their normals, within their noise cut-off, minimising squared turning angles plus a
+// local inside/outside balance (banded Levenberg-Marquardt with an active set for the
+// bounds). Deviations from the authors' code (quadratic instead of circle fits, a local
+// soft balance instead of one equality per line-fitted run, exact angles by iterated LM
+// instead of one linearised solve, a small fidelity term, own banded solver instead of
+// Eigen) are listed with their reasons in stretch_denoise.h.
 //
 // Robustness rule: the only decisions on geometry are FitConnect's. Everything below is
 // arithmetic on output coordinates; its branches (step accepted, bound reached, a
