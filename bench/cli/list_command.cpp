@@ -1,5 +1,6 @@
 #include "bench/cli/list_command.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -58,14 +59,16 @@ void run_list(const List_options& options) {
     return;
   }
   if (options.what == "suites") {
+    std::size_t width = 0;
+    for (const bench::Suite& suite : bench::suites()) width = std::max(width, suite.name.size() + 2);
     for (const bench::Suite& suite : bench::suites()) {
       if (options.names_only) {
         std::cout << suite.name << '\n';
         continue;
       }
-      std::cout << std::left << std::setw(16) << suite.name << suite.description << '\n';
+      std::cout << std::left << std::setw(static_cast<int>(width)) << suite.name << suite.description << '\n';
       if (!suite.variable.empty()) {
-        std::cout << std::setw(16) << "" << suite.variable << ":";
+        std::cout << std::setw(static_cast<int>(width)) << "" << suite.variable << ":";
         for (const std::string_view level : suite.levels) std::cout << ' ' << level;
         std::cout << '\n';
       }

@@ -1,6 +1,7 @@
 #include "bench/runner/suite.h"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "bench/runner/bench_input.h"
@@ -9,60 +10,75 @@
 namespace curvebench::bench {
 namespace {
 
-// Closed smooth curves with their own ground truth (SVG Béziers and random Fourier
-// curves): stand-ins for the survey's bunny and classic manifold curves, whose ground
-// truth we cannot redistribute.
-const std::vector<std::string_view> closed_curves{"svg:data/svg/simple.svg", "svg:data/svg/blob2.svg",
-                                                  "svg:data/svg/complex.svg", "fourier:seed=1",
-                                                  "fourier:seed=2", "fourier:seed=3"};
-
-// The noise experiments ask a rate (one closed curve per curve, the share of outputs with
-// the true topology), so they run on 30 curves: a share then carries a Wilson interval a
-// few tens of points wide rather than a coin's.
-const std::vector<std::string_view>& noise_curves() {
-  static const std::vector<std::string_view> curves = [] {
-    static std::vector<std::string> fourier;
-    for (int seed = 4; seed <= 27; ++seed) fourier.push_back("fourier:seed=" + std::to_string(seed));
-    std::vector<std::string_view> all = closed_curves;
-    all.insert(all.end(), fourier.begin(), fourier.end());
-    return all;
-  }();
+// Smooth closed curves with their own ground truth: the SVG Bézier outline that is
+// smooth (simple.svg; blob2.svg and complex.svg have tangent breaks, lfs 0, so they are
+// not) and random Fourier curves, seeds 1, 2, ...: stand-ins for the survey's bunny and
+// classic manifold curves, whose ground truth we cannot redistribute. A name per curve,
+// so each instance replays on its own.
+std::vector<std::string_view> smooth_closed_curves(std::size_t count) {
+  static std::vector<std::unique_ptr<std::string>> names;  // the views below point here
+  while (names.size() + 1 < count) names.push_back(std::make_unique<std::string>("fourier:seed=" + std::to_string(names.size() + 1)));
+  std::vector<std::string_view> curves{"svg:data/svg/simple.svg"};
+  for (std::size_t i = 0; i + 1 < count; ++i) curves.push_back(*names[i]);
   return curves;
 }
 
-const std::vector<Suite>& table() {
-  static const std::vector<Suite> all{
-      {.name = "sampling",
-       .description = "Sampling density: smooth closed curves, safe epsilon-sampling (survey: Sampling Density)",
-       .inputs = closed_curves,
+// A share of one closed curve per input (the noise experiments) rests on 30 curves in the
+// default suites, so that it carries a Wilson interval a few tens of points wide rather
+// than a coin's, and on 200 in the `full` suite.
+constexpr std::size_t default_instances = 30, full_instances = 200;
+
+// The smooth-curve experiments, on `count` curves each (`suffix` names the size).
+std::vector<Suite> smooth_curve_suites(std::size_t count, std::string_view suffix) {
+  static std::vector<std::unique_ptr<std::string>> texts;  // names and descriptions the views keep
+  const auto text = [](std::string value) -> std::string_view {
+    return *texts.emplace_back(std::make_unique<std::string>(std::move(value)));
+  };
+  const std::string curves = std::to_string(count) + " smooth closed curves";
+  const std::vector<std::string_view> inputs = smooth_closed_curves(count);
+  return {
+      {.name = text("sampling" + std::string(suffix)),
+       .description = text("Sampling density: " + curves + ", safe epsilon-sampling (survey: Sampling Density)"),
+       .inputs = inputs,
        .settings = "|epsilon={}",
        .variable = "epsilon",
        .levels = {"0.25", "0.5", "0.75"}},
-      {.name = "noisy",
-       .description = "Uniform noise of extent delta x bounding-box diagonal at epsilon 0.3, 30 curves (survey: "
-                      "Uniform Noise)",
-       .inputs = noise_curves(),
+      {.name = text("noisy" + std::string(suffix)),
+       .description = text("Uniform noise of extent delta x bounding-box diagonal at epsilon 0.3, " + curves +
+                           " (survey: Uniform Noise)"),
+       .inputs = inputs,
        .settings = "|epsilon=0.3|noise={}|seed=1",
        .variable = "delta",
        .levels = {"0", "0.003", "0.01", "0.03"}},
-      {.name = "lfsnoise",
-       .description = "Noise along the normal of delta x lfs at epsilon 0.3, 30 curves (survey: LFS-based Noise)",
-       .inputs = noise_curves(),
+      {.name = text("lfsnoise" + std::string(suffix)),
+       .description = text("Noise along the normal of delta x lfs at epsilon 0.3, " + curves +
+                           " (survey: LFS-based Noise)"),
+       .inputs = inputs,
        .settings = "|epsilon=0.3|lfs-noise={}|seed=1",
        .variable = "delta",
        .levels = {"0", "0.1", "0.33", "0.5"}},
-      {.name = "sampling-noise",
-       .description = "Varying sampling density with lfs noise delta = 1/3 (survey: Varying Sampling Density + LFS Noise)",
-       .inputs = closed_curves,
+      {.name = text("sampling-noise" + std::string(suffix)),
+       .description = text("Varying sampling density with lfs noise delta = 1/3, " + curves +
+                           " (survey: Varying Sampling Density + LFS Noise)"),
+       .inputs = inputs,
        .settings = "|epsilon={}|lfs-noise=0.33|seed=1",
        .variable = "epsilon",
        .levels = {"0.1", "0.2", "0.4"}},
-      {.name = "outliers",
-       .description = "Outliers uniform in the bounding box, percent of the samples, at epsilon 0.3 (survey: Outliers)",
-       .inputs = closed_curves,
+      {.name = text("outliers" + std::string(suffix)),
+       .description = text("Outliers uniform in the bounding box, percent of the samples, at epsilon 0.3, " + curves +
+                           " (survey: Outliers)"),
+       .inputs = inputs,
        .settings = "|epsilon=0.3|outliers={}|seed=1",
        .variable = "percent",
        .levels = {"0", "5", "10", "20"}},
+  };
+}
+
+const std::vector<Suite>& table() {
+  static const std::vector<Suite> all = [] {
+    std::vector<Suite> suites = smooth_curve_suites(default_instances, "");
+    for (Suite& suite : smooth_curve_suites(full_instances, "-full")) suites.push_back(std::move(suite));
+    suites.insert(suites.end(), {
       {.name = "manifold",
        .description = "Whether the output is a manifold, on the bundled classic point sets and sampled closed curves "
                       "(survey: Manifold Curves)",
@@ -144,7 +160,13 @@ const std::vector<Suite>& table() {
        .description = "Every experiment suite",
        .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "manifold", "sharp-corners",
                  "open-curves", "multiple-curves", "intersecting", "qualitative", "runtime", "certify", "glyphs"}},
-  };
+      {.name = "full",
+       .description = "The smooth-curve experiments on 200 curves per cell, for rates with narrow intervals "
+                      "(under an hour on 2 cores; shard it for more)",
+       .parts = {"sampling-full", "noisy-full", "lfsnoise-full", "sampling-noise-full", "outliers-full"}},
+    });
+    return suites;
+  }();
   return all;
 }
 

@@ -19,6 +19,7 @@
 #include "bench/runner/results_table.h"
 #include "bench/runner/run.h"
 #include "bench/runner/suite.h"
+#include "geometry/curves/curve_spec.h"
 #include "geometry/io/point_io.h"
 #include "tests/support/temporary_directory.h"
 
@@ -160,6 +161,39 @@ TEST(Suites, EveryCaseNamesAKnownSourceAndLevel) {
   EXPECT_EQ(smoke[1].level, "epsilon=0.6");
 }
 
+// The smooth-curve experiments hold what their names say: every cell (suite x level) has
+// its instance count, and every curve is closed with no corner (blob2.svg and complex.svg,
+// Béziers with tangent breaks, once sat here and made "smooth" suites measure corners).
+TEST(Suites, SmoothCurveCellsHaveTheirCountOfSmoothClosedCurves) {
+  for (const auto& [suffix, count] : {std::pair<std::string, std::size_t>{"", 30}, {"-full", 200}}) {
+    std::set<std::string> curves;
+    for (const char* experiment : {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers"}) {
+      const Suite* suite = find_suite(experiment + suffix);
+      ASSERT_NE(suite, nullptr) << experiment << suffix;
+      std::map<std::string, std::size_t> per_level;
+      for (const Suite_case& c : suite_cases(*suite)) {
+        ++per_level[c.level];
+        curves.insert(std::string(input_source(c.input)));
+      }
+      EXPECT_EQ(per_level.size(), suite->levels.size()) << suite->name;
+      for (const auto& [level, instances] : per_level) EXPECT_EQ(instances, count) << suite->name << ' ' << level;
+    }
+    EXPECT_EQ(curves.size(), count) << "the experiments of one size share their curves";
+    for (std::string source : curves) {
+      if (source.starts_with("svg:")) source = "svg:" + resolve_data_path(source.substr(4)).string();
+      const geometry::Curve curve = geometry::make_curve(source);
+      for (const geometry::Curve_component& component : curve.components) {
+        EXPECT_TRUE(component.closed()) << source;
+        EXPECT_TRUE(component.corners().empty()) << source << " has a tangent break";
+      }
+    }
+  }
+  EXPECT_FALSE(geometry::make_curve("svg:" + resolve_data_path("data/svg/blob2.svg").string())
+                   .components.front()
+                   .corners()
+                   .empty());  // the check above can fail
+}
+
 TEST(ResultsTable, RowsSurviveQuotingAndACutOffLastLine) {
   testing::TemporaryDirectory dir;
   std::vector<Result_row> rows(2);
@@ -212,7 +246,9 @@ TEST(Run, SmokeSuiteRowsAndResume) {
   EXPECT_EQ(rows[0][Column::true_topology], "1");
   EXPECT_EQ(rows[1][Column::true_topology], "0");
   for (const Result_row& row : rows)
-    if (row[Column::exact] == "1") EXPECT_EQ(row[Column::true_topology], "1") << "exact implies the true topology";
+    if (row[Column::exact] == "1") {
+      EXPECT_EQ(row[Column::true_topology], "1") << "exact implies the true topology";
+    }
   EXPECT_TRUE(std::filesystem::exists(options.output / "results.json"));
 
   // Without --resume an existing run is not overwritten; with it, nothing is left to do.
