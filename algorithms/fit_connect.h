@@ -42,6 +42,12 @@
 //   - Blending. Theirs intersects the point's own normal line with each fit; ours projects
 //     the point radially onto the fit (its nearest point on it). Both keep only
 //     projections inside the fitted arc, and sharp points and their neighbours unmoved.
+//     Theirs fits each manifold point's own neighbourhood; on a sparse noisy sampling that
+//     is 3 to 5 points, which barely smooth. Ours widens the window by the neighbourhoods of
+//     up to `smoothing` representatives on each side, while the fit's residual stays that
+//     of noise (it at most doubles per step). On 200 smooth curves at lfs noise 0.5 this
+//     takes the RMS distance from 0.040 to 0.032 of the diagonal; on noise-free samplings it
+//     costs 0.004 -> 0.005. `smoothing` = 0 is their window.
 // Ties: neighbours at equal distance by index; along a fit, points at the same angle by
 // index; a point on the ray from the fit centre through p counts as after p.
 #pragma once
@@ -57,6 +63,7 @@ namespace curvebench::algorithms {
 struct Fit_connect_options {
   int max_neighbors = 1024;  // the largest neighbourhood a point grows to (2 to 65536)
   double sharp_angle = 60;   // degrees: curve ends meeting within it form a sharp corner
+  int smoothing = 2;         // representatives on each side a blending fit may take in (0 to 64)
   bool blend = true;         // output points blended onto the fits (else input positions)
 };
 
