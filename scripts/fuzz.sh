@@ -2,10 +2,13 @@
 # Runs every libFuzzer target of curvebench for a while: the crash hunt CI runs, and the
 # way a person grows the committed seed corpora.
 #
-#   scripts/fuzz.sh [SECONDS]          fuzz each target SECONDS (default: $FUZZ_SECONDS, else 60)
+#   scripts/fuzz.sh [SECONDS] [NAME...] fuzz each target (or the NAMEd ones) SECONDS
+#                                      (default: $FUZZ_SECONDS, else 60)
 #   scripts/fuzz.sh --merge [SECONDS]  the same, then add to fuzz/corpus/NAME/ the fewest
 #                                      new inputs that reach code the corpus does not
 #                                      (edges, not hit counts, so the corpus stays small)
+#   --jobs N                           targets side by side (default: one per core); a
+#                                      campaign in the background takes --jobs 1
 #
 # Builds the clang tree build-fuzz/ (packages: scripts/setup.sh; nothing is installed
 # here), finds the targets in it (fuzz/fuzz_NAME), and runs them one after another. New
@@ -22,13 +25,19 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$root/build-fuzz
 seconds=${FUZZ_SECONDS:-60}
 merge=false
-for arg in "$@"; do
-  case $arg in
+jobs=$(nproc)
+names=()
+while (($# > 0)); do
+  case $1 in
     --merge) merge=true ;;
-    '' | *[!0-9]*) echo "usage: $0 [--merge] [SECONDS]" >&2; exit 2 ;;
-    *) seconds=$arg ;;
+    --jobs) jobs=${2:-}; shift ;;
+    *[!a-z_]* | '') [[ $1 =~ ^[0-9]+$ ]] || { echo "usage: $0 [--merge] [--jobs N] [SECONDS] [NAME...]" >&2; exit 2; }
+      seconds=$1 ;;
+    *) names+=("$1") ;;
   esac
+  shift
 done
+[[ $jobs =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: --jobs takes a positive number" >&2; exit 2; }
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
@@ -86,9 +95,17 @@ fuzz_target() {
 status=0
 mapfile -t targets < <(find "$build/fuzz" -maxdepth 1 -type f -name 'fuzz_*' -perm -u+x | sort)
 if ((${#targets[@]} == 0)); then echo "fuzz: no fuzz_* target in $build/fuzz" >&2; exit 1; fi
+if ((${#names[@]} > 0)); then
+  chosen=()
+  for name in "${names[@]}"; do
+    [[ -x $build/fuzz/fuzz_$name ]] || { echo "fuzz: no target $name in $build/fuzz" >&2; exit 2; }
+    chosen+=("$build/fuzz/fuzz_$name")
+  done
+  targets=("${chosen[@]}")
+fi
 running=0
 for binary in "${targets[@]}"; do
-  if ((running == $(nproc))); then wait -n || status=1; ((running--)); fi
+  if ((running == jobs)); then wait -n || status=1; ((running--)); fi
   fuzz_target "$binary" &
   ((++running))
 done
