@@ -1,6 +1,7 @@
 #include "bench/cli/run_command.h"
 
 #include <iostream>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -11,15 +12,21 @@ namespace {
 
 struct Run_command_options {
   bench::Run_options run;
-  std::string shard, pictures = "all";
+  std::string shard, pictures = "some";
   bool no_report = false, quiet = false;
 };
 
+const std::map<std::string, bench::Pictures> picture_modes{{"some", bench::Pictures::some},
+                                                          {"all", bench::Pictures::all},
+                                                          {"failures", bench::Pictures::failures},
+                                                          {"none", bench::Pictures::none}};
+constexpr const char* pictures_help =
+    "Pictures of reconstructions: some (per algorithm and suite, its first 6 failures and its first 2 jobs), all, "
+    "failures (every job not exact) or none";
+
 void run(Run_command_options& o) {
   if (!o.shard.empty()) std::tie(o.run.shard, o.run.shards) = bench::parse_shard(o.shard);
-  o.run.pictures = o.pictures == "none" ? bench::Pictures::none
-                   : o.pictures == "failures" ? bench::Pictures::failures
-                                              : bench::Pictures::all;
+  o.run.pictures = picture_modes.at(o.pictures);
   o.run.report = !o.no_report;
   o.run.progress = !o.quiet;
   const bench::Run_summary s = bench::run_suite(o.run);
@@ -46,8 +53,8 @@ void add_run_commands(CLI::App& app) {
   command->add_flag("--resume", o->run.resume, "Continue an interrupted run in the same directory");
   command->add_option("--timeout", o->run.timeout_seconds, "Time limit per job in seconds (0: none)")
       ->capture_default_str();
-  command->add_option("--pictures", o->pictures, "Pictures of reconstructions: all, failures (not exact) or none")
-      ->check(CLI::IsMember({"all", "failures", "none"}))
+  command->add_option("--pictures", o->pictures, pictures_help)
+      ->check(CLI::IsMember({"some", "all", "failures", "none"}))
       ->capture_default_str();
   command->add_flag("--no-report", o->no_report, "Do not write report.html and charts");
   command->add_flag("-q,--quiet", o->quiet, "No progress output");
@@ -56,12 +63,16 @@ void add_run_commands(CLI::App& app) {
   auto merge_inputs = std::make_shared<std::vector<std::filesystem::path>>();
   auto merge_output = std::make_shared<std::filesystem::path>();
   auto merge_no_report = std::make_shared<bool>(false);
+  auto merge_pictures = std::make_shared<std::string>("some");
   CLI::App* merge = app.add_subcommand("merge", "Combine the output directories of shard runs into one");
   merge->add_option("SHARD_DIR", *merge_inputs, "Output directories of `curvebench run --shard`")->required();
   merge->add_option("-o,--output", *merge_output, "Directory of the combined results and report")->required();
   merge->add_flag("--no-report", *merge_no_report, "Do not write report.html and charts");
+  merge->add_option("--pictures", *merge_pictures, "The --pictures the shards ran with (some: capped again, as one run)")
+      ->check(CLI::IsMember({"some", "all", "failures", "none"}))
+      ->capture_default_str();
   merge->callback([=] {
-    const std::size_t rows = bench::merge_runs(*merge_inputs, *merge_output, !*merge_no_report);
+    const std::size_t rows = bench::merge_runs(*merge_inputs, *merge_output, picture_modes.at(*merge_pictures), !*merge_no_report);
     std::cerr << "merged " << rows << " jobs into " << (*merge_output / "results.csv").string() << '\n';
   });
 

@@ -36,6 +36,7 @@ struct Job {
   std::size_t number;  // = case * algorithms + algorithm
   std::size_t case_index;
   const algorithms::Algorithm* algorithm;
+  bool success_picture = false;  // Pictures::some draws it even if it is exact
 };
 
 std::vector<const algorithms::Algorithm*> chosen_algorithms(const std::vector<std::string>& names) {
@@ -152,7 +153,10 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
     }
     // A picture of more points than a screen has pixels across shows nothing but costs
     // megabytes, and a browser seconds: large inputs (the runtime suite) get none.
-    const bool wanted = options.pictures == Pictures::all || (options.pictures == Pictures::failures && evaluation.exact != true);
+    const bool failure = evaluation.exact != true;
+    const bool wanted = options.pictures == Pictures::all ||
+                        (options.pictures == Pictures::failures && failure) ||
+                        (options.pictures == Pictures::some && (failure || job.success_picture));
     if (wanted && input.points.size() <= max_picture_points) {
       row[Column::picture] = picture_name(job.number);
       write_picture(options.output / row[Column::picture], input, points, result.edges, on_input_points, evaluation,
@@ -199,8 +203,24 @@ class Progress {
   Clock::time_point start_ = Clock::now(), shown_{};
 };
 
-void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> rows, bool report) {
+// Pictures::some: keeps, per algorithm and suite, the first failure_pictures pictures of
+// jobs that are not exact, in job order, and deletes the others' (the successes drawn are
+// few already). Keeping the first ones makes the result that of one run whatever the
+// shards: each of the first k failures overall is among the first k of its own shard.
+void cap_pictures(const std::filesystem::path& dir, std::vector<Result_row>& rows) {
+  std::map<std::pair<std::string, std::string>, std::size_t> failures;
+  for (Result_row& row : rows) {
+    std::string& picture = row[Column::picture];
+    if (picture.empty() || row[Column::exact] == "1") continue;
+    if (++failures[{row[Column::algorithm], row[Column::suite]}] <= failure_pictures) continue;
+    std::filesystem::remove(dir / picture);
+    picture.clear();
+  }
+}
+
+void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> rows, bool report, Pictures pictures) {
   std::ranges::sort(rows, {}, &Result_row::job);
+  if (pictures == Pictures::some) cap_pictures(dir, rows);
   write_results_csv(dir / "results.csv", rows);
   write_results_json(dir / "results.json", rows);
   // The proven bounds, for the report's breakdown chart (certify/theorems.h).
@@ -214,15 +234,18 @@ void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> row
 
 // The jobs of this shard. Job c * A + a runs algorithm a on case c: numbers that do not
 // depend on the shard, so that shards and resumed runs agree on them.
-std::vector<Job> planned_jobs(std::size_t cases, const std::vector<const algorithms::Algorithm*>& chosen,
+std::vector<Job> planned_jobs(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen,
                               const Run_options& options) {
   if (options.shards == 0 || options.shard == 0 || options.shard > options.shards)
     throw std::invalid_argument("--shard K/N needs 1 <= K <= N");
+  std::map<std::pair<std::size_t, std::string_view>, std::size_t> seen;  // jobs so far per algorithm and suite
   std::vector<Job> jobs;
-  for (std::size_t c = 0; c < cases; ++c)
-    for (std::size_t a = 0; a < chosen.size(); ++a)
+  for (std::size_t c = 0; c < cases.size(); ++c)
+    for (std::size_t a = 0; a < chosen.size(); ++a) {
+      const bool early = seen[{a, cases[c].suite}]++ < success_pictures;
       if (const std::size_t number = c * chosen.size() + a; number % options.shards == options.shard - 1)
-        jobs.push_back({number, c, chosen[a]});
+        jobs.push_back({number, c, chosen[a], early});
+    }
   return jobs;
 }
 
@@ -307,7 +330,7 @@ Run_summary run_suite(const Run_options& options) {
 
 Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen,
                       const Run_options& options) {
-  const std::vector<Job> jobs = planned_jobs(cases.size(), chosen, options);
+  const std::vector<Job> jobs = planned_jobs(cases, chosen, options);
 
   const std::filesystem::path csv = options.output / "results.csv";
   std::filesystem::create_directories(options.output / "pictures");
@@ -367,11 +390,12 @@ Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<co
         });
   }
   out.close();
-  write_outputs(options.output, std::move(rows), options.report);
+  write_outputs(options.output, std::move(rows), options.report, options.pictures);
   return summary;
 }
 
-std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output, bool report) {
+std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output,
+                       Pictures pictures, bool report) {
   std::map<std::size_t, Result_row> by_job;
   std::filesystem::create_directories(output / "pictures");
   for (const std::filesystem::path& shard : shards) {
@@ -390,7 +414,7 @@ std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std:
   std::vector<Result_row> rows;
   for (auto& [job, row] : by_job) rows.push_back(std::move(row));
   const std::size_t count = rows.size();
-  write_outputs(output, std::move(rows), report);
+  write_outputs(output, std::move(rows), report, pictures);
   return count;
 }
 

@@ -4,10 +4,12 @@
 // interrupted and --resume runs only what is missing. --shard K/N runs a deterministic 1/N
 // of the jobs (job j belongs to shard j mod N + 1) and `curvebench merge` combines shards.
 //
-// DIR/ holds results.csv (sorted by job at the end), results.json, pictures/JOB.svg (each
+// DIR/ holds results.csv (sorted by job at the end), results.json, pictures/JOB.svg (a
 // reconstruction of at most 5,000 points on its ground truth, wrong edges red, missing
-// ones dashed) and the report
-// (report.html and charts/, by bench/report/make_report.py).
+// ones dashed) and the report (report.html and charts/, by bench/report/make_report.py).
+// Pictures: by default (Pictures::some) the first few failures of each algorithm in each
+// suite, in job order, and its first two jobs if they succeed, so that a run of tens of
+// thousands of jobs writes a gallery, not gigabytes.
 #pragma once
 
 #include <cstddef>
@@ -21,7 +23,10 @@
 
 namespace curvebench::bench {
 
-enum class Pictures { all, failures, none };
+// some: per algorithm and suite, the first `failure_pictures` jobs that are not exact and
+// those of its first `success_pictures` jobs that are.
+enum class Pictures { some, all, failures, none };
+inline constexpr std::size_t failure_pictures = 6, success_pictures = 2;
 
 struct Run_options {
   std::string suite;
@@ -33,7 +38,7 @@ struct Run_options {
   // Per job; 0: none. A minute: every algorithm but Optimal Transport (quadratic in
   // CGAL, 13 s at n = 10^4) takes seconds at the runtime suite's n = 10^5.
   double timeout_seconds = 60;
-  Pictures pictures = Pictures::all;
+  Pictures pictures = Pictures::some;
   bool report = true;
   bool progress = true;
 };
@@ -55,10 +60,11 @@ Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<co
                       const Run_options& options);
 
 // Combines the results of shard runs into `output` (rows by job, pictures copied) and
-// writes results.json and, if asked, the report. Throws std::invalid_argument if two
+// writes results.json and, if asked, the report. `pictures`: what the shards ran with
+// (Pictures::some caps the merged pictures as one run would have). Throws std::invalid_argument if two
 // shards disagree on a job.
 std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output,
-                       bool report);
+                       Pictures pictures, bool report);
 
 // "K/N" as (K, N), for --shard; throws std::invalid_argument naming the text otherwise.
 std::pair<std::size_t, std::size_t> parse_shard(const std::string& text);

@@ -2,6 +2,8 @@
 // results table, and whole runs (rows, exact reconstruction of a dense circle, resume).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <signal.h>
 #include <unistd.h>
 
@@ -13,6 +15,7 @@
 #include <set>
 #include <thread>
 
+#include "algorithms/registry.h"
 #include "bench/runner/bench_input.h"
 #include "bench/runner/evaluation.h"
 #include "bench/runner/process_pool.h"
@@ -249,7 +252,15 @@ TEST(Run, SmokeSuiteRowsAndResume) {
     if (row[Column::exact] == "1") {
       EXPECT_EQ(row[Column::true_topology], "1") << "exact implies the true topology";
     }
-  EXPECT_TRUE(std::filesystem::exists(options.output / "results.json"));
+  // results.json: the same rows, typed.
+  const nlohmann::json json = nlohmann::json::parse(std::ifstream(options.output / "results.json"));
+  ASSERT_EQ(json.size(), rows.size());
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    EXPECT_EQ(json[j]["job"], j);
+    EXPECT_EQ(json[j]["algorithm"], rows[j][Column::algorithm]);
+    EXPECT_EQ(json[j]["exact"], rows[j][Column::exact] == "1");
+    EXPECT_TRUE(json[j]["message"].is_null());
+  }
 
   // Without --resume an existing run is not overwritten; with it, nothing is left to do.
   EXPECT_THROW(run_suite(options), std::invalid_argument);
@@ -276,7 +287,41 @@ TEST(Run, SmokeSuiteRowsAndResume) {
     EXPECT_EQ(run_suite(options).jobs, 3u);
   }
   const std::vector<std::filesystem::path> shards{dir.path() / "shard1", dir.path() / "shard2"};
-  EXPECT_EQ(merge_runs(shards, dir.path() / "merged", false), 6u);
+  EXPECT_EQ(merge_runs(shards, dir.path() / "merged", Pictures::some, false), 6u);
+  EXPECT_EQ(without_runtimes(read_results_csv(dir.path() / "merged" / "results.csv")), without_runtimes(rows));
+}
+
+// Pictures::some: per algorithm and suite, the first 6 failures in job order and the first
+// 2 jobs. The EMST is a tree, so it fails on every circle; NN-Crust is exact on each
+// (epsilon 0.1 < 1/3). Shards merged keep the same pictures as one run.
+TEST(Run, SomePicturesAreTheFirstFailuresAndJobsPerAlgorithmAndSuite) {
+  testing::TemporaryDirectory dir;
+  std::vector<Suite_case> cases;
+  for (int r = 1; r <= 10; ++r) cases.push_back({"t", "circle:r=" + std::to_string(r) + "|epsilon=0.1", ""});
+  const std::vector<const algorithms::Algorithm*> chosen{algorithms::find_algorithm("emst"),
+                                                         algorithms::find_algorithm("nn-crust")};
+  Run_options options{.suite = "", .output = dir.path() / "one", .jobs = 2, .report = false, .progress = false};
+  run_cases(cases, chosen, options);
+  const std::vector<Result_row> rows = read_results_csv(options.output / "results.csv");
+  ASSERT_EQ(rows.size(), 20u);
+  for (const Result_row& row : rows) {
+    const std::size_t c = row.job() / 2;
+    const bool emst = row[Column::algorithm] == "emst";
+    EXPECT_EQ(row[Column::exact], emst ? "0" : "1") << row[Column::input];
+    EXPECT_EQ(!row[Column::picture].empty(), c < (emst ? failure_pictures : success_pictures)) << row.job();
+  }
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& file : std::filesystem::directory_iterator(options.output / "pictures")) ++files;
+  EXPECT_EQ(files, failure_pictures + success_pictures) << "the pictures beyond the cap are deleted";
+
+  std::vector<std::filesystem::path> shards;
+  for (const std::size_t shard : {1, 2, 3}) {
+    options.output = dir.path() / ("shard" + std::to_string(shard));
+    options.shard = shard, options.shards = 3;
+    run_cases(cases, chosen, options);
+    shards.push_back(options.output);
+  }
+  merge_runs(shards, dir.path() / "merged", Pictures::some, false);
   EXPECT_EQ(without_runtimes(read_results_csv(dir.path() / "merged" / "results.csv")), without_runtimes(rows));
 }
 

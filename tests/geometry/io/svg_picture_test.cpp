@@ -29,8 +29,15 @@ struct Element {
 // would choke on: one root <svg>, balanced tags, text without raw '<' or stray '&', and
 // coordinates that are not finite numbers inside the canvas. It lists the elements with
 // their attributes in document order, and the problems it found, one per line.
+// A shape of a <path d="...">: a segment "M x1 y1L x2 y2" or a dot "M x yh0".
+struct Shape {
+  bool dot = false;
+  double x1 = 0, y1 = 0, x2 = 0, y2 = 0;  // a dot: at (x1, y1)
+};
+
 struct ParsedSvg {
   std::vector<Element> elements;
+  std::vector<Shape> shapes;  // of every path, in document order
   double width = 0, height = 0;
   std::string problems;
 };
@@ -78,18 +85,38 @@ ParsedSvg parse_svg(const std::string& svg) {
   if (parsed.elements.empty()) return parsed;
   parsed.width = to_number(parsed.elements[0].attributes["width"]).value_or(-1);
   parsed.height = to_number(parsed.elements[0].attributes["height"]).value_or(-1);
+  // Path data: chains "M x yL x yL x y..." (a segment per L) and dots "M x yh0", every
+  // coordinate a number on the canvas.
+  const std::regex piece(R"(M([^ ]+) ([^LhM]+)(h0|(?:L[^ ]+ [^LM]+)+))");
+  const std::regex vertex(R"(L([^ ]+) ([^LM]+))");
   for (const auto& [name, attributes] : parsed.elements) {
-    if (name != "line" && name != "circle") continue;
-    for (const auto& [key, value] : attributes) {
-      const std::optional<double> number = to_number(value);
-      const double limit = key == "r"                            ? HUGE_VAL
-                           : key.starts_with('x') || key == "cx" ? parsed.width
-                                                                 : parsed.height;
-      if (!number || !std::isfinite(*number) || *number < 0 || *number > limit) {
-        problem(name + " " + key + "=" + value + " is not a number in [0, " +
-                std::to_string(limit) + "]");
+    if (name != "path") continue;
+    const std::string& d = attributes.count("d") ? attributes.at("d") : std::string();
+    std::size_t covered = 0;
+    const auto coordinate = [&](const std::string& text, bool x) {
+      const std::optional<double> number = to_number(text);
+      const double limit = x ? parsed.width : parsed.height;
+      if (!number || !std::isfinite(*number) || *number < 0 || *number > limit)
+        problem("path coordinate " + text + " is not a number in [0, " + std::to_string(limit) + "]");
+      return number.value_or(0);
+    };
+    for (std::sregex_iterator it(d.begin(), d.end(), piece), none; it != none; ++it) {
+      const std::smatch& m = *it;
+      if (static_cast<std::size_t>(m.position(0)) != covered) break;
+      covered += static_cast<std::size_t>(m.length(0));
+      double x = coordinate(m[1].str(), true), y = coordinate(m[2].str(), false);
+      if (m[3].str() == "h0") {
+        parsed.shapes.push_back({.dot = true, .x1 = x, .y1 = y});
+        continue;
+      }
+      const std::string chain = m[3].str();
+      for (std::sregex_iterator v(chain.begin(), chain.end(), vertex), end; v != end; ++v) {
+        const double x2 = coordinate((*v)[1].str(), true), y2 = coordinate((*v)[2].str(), false);
+        parsed.shapes.push_back({.dot = false, .x1 = x, .y1 = y, .x2 = x2, .y2 = y2});
+        x = x2, y = y2;
       }
     }
+    if (d.empty() || covered != d.size()) problem("path data not M x yL x y or M x yh0 pieces: " + d);
   }
   return parsed;
 }
@@ -111,19 +138,38 @@ std::vector<Element> elements_named(const ParsedSvg& svg, const std::string& nam
   return out;
 }
 
-double number(const Element& e, const std::string& key) { return std::stod(e.attributes.at(key)); }
+std::vector<Shape> dots(const ParsedSvg& svg) {
+  std::vector<Shape> out;
+  for (const Shape& s : svg.shapes)
+    if (s.dot) out.push_back(s);
+  return out;
+}
+
+std::vector<Shape> segments(const ParsedSvg& svg) {
+  std::vector<Shape> out;
+  for (const Shape& s : svg.shapes)
+    if (!s.dot) out.push_back(s);
+  return out;
+}
 
 // The check the other tests rely on, on broken pictures it must catch.
 TEST(SvgPicture, TheWellFormednessCheckCatchesBrokenSvg) {
   const auto svg = [](const std::string& body) {
     return R"(<svg width="10" height="10">)" + body + "</svg>\n";
   };
-  EXPECT_EQ(parse_svg(svg(R"(<circle cx="1" cy="2" r="1"/>)")).problems, "");
+  const ParsedSvg good = parse_svg(svg(R"(<path d="M1 2h0M0 0L3 4L5 6"/>)"));
+  EXPECT_EQ(good.problems, "");
+  ASSERT_EQ(good.shapes.size(), 3u);
+  EXPECT_TRUE(good.shapes[0].dot);
+  EXPECT_EQ(good.shapes[2].x1, 3);
+  EXPECT_EQ(good.shapes[2].y2, 6);
   for (const std::string& bad : {
            svg("<g>"),                                      // unclosed
            svg("a & b"),                                    // raw '&'
-           svg(R"(<circle cx="nan" cy="1" r="1"/>)"),       // not finite
-           svg(R"(<line x1="0" y1="11" x2="1" y2="1"/>)"),  // off the canvas
+           svg(R"(<path d="Mnan 1h0"/>)"),                  // not finite
+           svg(R"(<path d="M0 11L1 1"/>)"),                 // off the canvas
+           svg(R"(<path d="M1 1L2"/>)"),                    // cut short
+           svg(R"(<path d=""/>)"),                          // empty
            svg("") + "<svg></svg>\n",                       // two roots
        }) {
     EXPECT_NE(parse_svg(bad).problems, "") << bad;
@@ -138,7 +184,7 @@ TEST(SvgPicture, DrawsZeroOneTwoAndCoincidentPoints) {
     picture.add_edges(std::vector<Edge>(points.size() > 1 ? 1 : 0, Edge{0, 1}));
     picture.add_points();
     const ParsedSvg svg = render(picture);
-    EXPECT_EQ(elements_named(svg, "circle").size(), points.size());
+    EXPECT_EQ(dots(svg).size(), points.size());
     EXPECT_GT(svg.width, 0);
     EXPECT_GT(svg.height, 0);
   }
@@ -148,9 +194,9 @@ TEST(SvgPicture, CentresASinglePoint) {
   SvgPicture picture(std::vector<Point>{Point(1e9, -7)});
   picture.add_points();
   const ParsedSvg svg = render(picture);
-  const Element circle = elements_named(svg, "circle").at(0);
-  EXPECT_DOUBLE_EQ(number(circle, "cx"), svg.width / 2);
-  EXPECT_DOUBLE_EQ(number(circle, "cy"), svg.height / 2);
+  const Shape dot = dots(svg).at(0);
+  EXPECT_DOUBLE_EQ(dot.x1, svg.width / 2);
+  EXPECT_DOUBLE_EQ(dot.y1, svg.height / 2);
 }
 
 TEST(SvgPicture, FitsTheLongSideOfCollinearPointsTo800Pixels) {
@@ -160,20 +206,20 @@ TEST(SvgPicture, FitsTheLongSideOfCollinearPointsTo800Pixels) {
       points.push_back(horizontal ? Point(t, 3) : Point(3, t));
     SvgPicture picture(points);
     picture.add_points();
-    const auto circles = elements_named(render(picture), "circle");
-    const std::string along = horizontal ? "cx" : "cy";
-    const std::string across = horizontal ? "cy" : "cx";
-    EXPECT_DOUBLE_EQ(std::abs(number(circles[2], along) - number(circles[0], along)), 800);
-    EXPECT_DOUBLE_EQ(std::abs(number(circles[1], along) - number(circles[0], along)), 200);
-    EXPECT_EQ(number(circles[0], across), number(circles[2], across));
+    const auto d = dots(render(picture));
+    const auto along = [&](std::size_t k) { return horizontal ? d[k].x1 : d[k].y1; };
+    const auto across = [&](std::size_t k) { return horizontal ? d[k].y1 : d[k].x1; };
+    EXPECT_DOUBLE_EQ(std::abs(along(2) - along(0)), 800);
+    EXPECT_DOUBLE_EQ(std::abs(along(1) - along(0)), 200);
+    EXPECT_EQ(across(0), across(2));
   }
 }
 
 TEST(SvgPicture, YAxisPointsUp) {
   SvgPicture picture(std::vector<Point>{Point(0, 0), Point(0, 1)});
   picture.add_points();
-  const auto circles = elements_named(render(picture), "circle");
-  EXPECT_LT(number(circles[1], "cy"), number(circles[0], "cy"));
+  const auto d = dots(render(picture));
+  EXPECT_LT(d[1].y1, d[0].y1);
 }
 
 std::string svg_of_scaled_drawing(double scale) {
@@ -201,12 +247,15 @@ TEST(SvgPicture, LooksTheSameWhateverTheScaleOfTheData) {
   ASSERT_EQ(small.size(), large.size());
   for (std::size_t k = 0; k < small.size(); ++k) {
     ASSERT_EQ(small[k].name, large[k].name);
-    for (const auto& [key, value] : small[k].attributes) {
-      if (key == "x1" || key == "y1" || key == "x2" || key == "y2" || key == "cx" || key == "cy" ||
-          key == "r" || key == "stroke-width") {
-        EXPECT_NEAR(std::stod(value), std::stod(large[k].attributes.at(key)), 0.011) << key;
-      }
+    if (small[k].attributes.count("stroke-width")) {
+      EXPECT_EQ(small[k].attributes.at("stroke-width"), large[k].attributes.at("stroke-width"));
     }
+  }
+  ASSERT_EQ(small_svg.shapes.size(), large_svg.shapes.size());
+  for (std::size_t k = 0; k < small_svg.shapes.size(); ++k) {
+    const Shape &a = small_svg.shapes[k], &b = large_svg.shapes[k];
+    EXPECT_EQ(a.dot, b.dot);
+    for (const auto& [u, v] : {std::pair{a.x1, b.x1}, {a.y1, b.y1}, {a.x2, b.x2}, {a.y2, b.y2}}) EXPECT_NEAR(u, v, 0.011);
   }
 }
 
@@ -218,7 +267,7 @@ TEST(SvgPicture, CopesWithExtremeCoordinates) {
     SvgPicture picture(points);
     picture.add_edges(std::vector<Edge>{{0, 1}});
     picture.add_points();
-    EXPECT_EQ(elements_named(render(picture), "circle").size(), points.size());
+    EXPECT_EQ(dots(render(picture)).size(), points.size());
   }
 }
 
@@ -251,11 +300,12 @@ TEST(SvgPicture, DrawsLayersInOrderWithTheirStyles) {
   EXPECT_EQ(groups[0].attributes["stroke-opacity"], "0.5");
   EXPECT_EQ(groups[1].attributes["stroke"], "red");
   EXPECT_EQ(groups[1].attributes["stroke-dasharray"], "4 2");
-  EXPECT_EQ(groups[2].attributes["fill"], "#000000");
-  EXPECT_EQ(elements_named(svg, "line").size(), 3u + 1u);  // + the legend swatch
+  EXPECT_EQ(groups[2].attributes["stroke"], "#000000");
+  EXPECT_EQ(groups[2].attributes["stroke-width"], "5");  // a dot of radius 2.5
+  const auto lines = segments(svg);
+  EXPECT_EQ(lines.size(), 3u + 1u);  // + the legend swatch
   // The frame fits the moved point (2, 2) too: it lies on the right edge of the plot.
-  const auto lines = elements_named(svg, "line");
-  EXPECT_DOUBLE_EQ(number(lines[2], "x2"), svg.width - 20);
+  EXPECT_DOUBLE_EQ(lines[2].x2, svg.width - 20);
 }
 
 TEST(SvgPicture, RejectsBadEdgesPointsAndStyles) {
@@ -291,7 +341,8 @@ RC_GTEST_PROP(SvgPicture, AnyFinitePointsGiveAWellFormedPicture, ()) {
   picture.write(out);
   const ParsedSvg svg = parse_svg(out.str());
   RC_ASSERT(svg.problems == "");
-  RC_ASSERT(elements_named(svg, "circle").size() == points.size());
+  RC_ASSERT(dots(svg).size() == points.size());
+  RC_ASSERT(segments(svg).size() == chain.size());  // chained or not, one segment per edge
 }
 
 }  // namespace
