@@ -70,6 +70,39 @@ def wilson(flags, z=1.959964):
     return k, n, 100 * max(0.0, centre - half), 100 * min(1.0, centre + half)
 
 
+# Student's t, 97.5 % quantile, for 1 to 30 degrees of freedom (beyond: the Cornish-Fisher
+# expansion around the normal quantile, within 1e-4 of the true value there).
+T975 = (12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145, 2.131,
+        2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042)
+
+
+def t975(df):
+    if df <= len(T975):
+        return T975[df - 1]
+    z = 1.959964
+    return z + (z ** 3 + z) / (4 * df) + (5 * z ** 5 + 16 * z ** 3 + 3 * z) / (96 * df * df)
+
+
+def mean_interval(values):
+    """(mean, n, low, high): the mean with its Student-t 95% confidence interval (None bounds below 2 values)."""
+    values = [v for v in values if v is not None and math.isfinite(v)]
+    n = len(values)
+    if n == 0:
+        return None, 0, None, None
+    m = statistics.fmean(values)
+    if n == 1:
+        return m, 1, None, None
+    half = t975(n - 1) * statistics.stdev(values) / math.sqrt(n)
+    return m, n, m - half, m + half
+
+
+def fmt_mean(interval):
+    m, n, low, high = interval
+    if n == 0:
+        return "–"
+    return f"{m:.3g}" + ("" if low is None else f" ±{(high - low) / 2:.2g}")
+
+
 def fmt_share(interval):
     k, n, low, high = interval
     return "–" if n == 0 else f"{100 * k / n:.0f}% [{low:.0f}–{high:.0f}] of {n}"
@@ -136,11 +169,17 @@ class Run:
 def group_stats(rows):
     ok = [r for r in rows if r["_ok"]]
     failures = collections.Counter(r["status"] or "(empty)" for r in rows if not r["_ok"])
+    exact = wilson(r["_exact"] for r in rows)
+    rms = mean_interval(number(r["rms"]) for r in ok)
+    hausdorff = mean_interval(number(r["hausdorff"]) for r in ok)
     return {
         "jobs": len(rows),
-        "exact": percent(r["_exact"] for r in rows),
-        "rms": mean(number(r["rms"]) for r in ok),
-        "hausdorff": mean(number(r["hausdorff"]) for r in ok),
+        "exact": 100 * exact[0] / exact[1] if exact[1] else None,
+        "exact_interval": exact,
+        "rms": rms[0],
+        "rms_interval": rms,
+        "hausdorff": hausdorff[0],
+        "hausdorff_interval": hausdorff,
         "manifold": percent(flag(r["manifold"]) for r in ok),
         # A failed job on an input with ground truth has the wrong topology, as it is not exact.
         "true_topology": wilson(flag(r["true_topology"]) if r["_ok"] else (False if r["_exact"] is False else None)
@@ -182,8 +221,10 @@ def grouped_bars(run, rows, metric, title, ylabel, path, percent_axis=False):
     """Levels on the x axis, one bar per algorithm (the survey's RMS figures)."""
     levels = sorted(ordered(r["level"] for r in rows), key=level_key)
     algorithms = [a for a in run.algorithms if any(r["algorithm"] == a for r in rows)]
-    value = {(a, lv): group_stats([r for r in rows if r["algorithm"] == a and r["level"] == lv])[metric]
+    stats = {(a, lv): group_stats([r for r in rows if r["algorithm"] == a and r["level"] == lv])
              for a in algorithms for lv in levels}
+    value = {key: st[metric] for key, st in stats.items()}
+    interval = {key: st[metric + "_interval"] for key, st in stats.items()}
     names = {lv.partition("=")[0] for lv in levels if lv}
     single = len(names) == 1 and "" not in levels
     labels = [lv.partition("=")[2] if single else (lv or "all inputs") for lv in levels]
@@ -206,6 +247,14 @@ def grouped_bars(run, rows, metric, title, ylabel, path, percent_axis=False):
         heights = [max((value[a, lv] or 0) - bottom, 0) for lv in levels]
         ax.bar(xs, heights, width, bottom=bottom,
                color=run.colour[a], label=a, edgecolor="white", linewidth=0.5)
+        # The 95% interval of each bar (Wilson for a share, Student t for a mean).
+        for x, lv in zip(xs, levels):
+            centre, (_, n, low, high) = value[a, lv], interval[a, lv]
+            if centre is None or low is None or n == 0:
+                continue
+            low, high = max(low, bottom), high
+            if high > low:
+                ax.plot([x, x], [low, high], color="#333333", linewidth=0.8)
         for x, lv in zip(xs, levels):
             mark_undrawn(ax, x, value[a, lv], run.colour[a], bottom)
     ax.set_xticks(range(len(levels)))
@@ -427,12 +476,16 @@ def summary_table(run, suite, rows):
                         f"</span>{esc(a)}</td>")
             bad = ' bad' if s["failures"] else ''
             out.append(f"<tr>{head}<td>{esc(lv or '–')}</td><td class=n>{s['jobs']}</td>"
-                       f"<td class=n>{fmt(s['exact'], '.0f', '%')}</td><td class=n>{fmt(s['rms'])}</td>"
-                       f"<td class=n>{fmt(s['hausdorff'])}</td><td class=n>{fmt(s['manifold'], '.0f', '%')}</td>"
+                       f"<td class=n>{esc(fmt_share(s['exact_interval']))}</td>"
+                       f"<td class=n>{esc(fmt_mean(s['rms_interval']))}</td>"
+                       f"<td class=n>{esc(fmt_mean(s['hausdorff_interval']))}</td>"
+                       f"<td class=n>{fmt(s['manifold'], '.0f', '%')}</td>"
                        f"<td class=n>{esc(fmt_share(s['true_topology']))}</td>"
                        f"<td class='n{bad}'>{esc(failures_text(s['failures']))}</td></tr>")
     out.append("</table><p class=note>exact: share of jobs reconstructed exactly, where a failed job on an input "
-               "with ground truth counts as not exact; RMS, Hausdorff and manifold: over ok jobs; RMS and Hausdorff "
+               "with ground truth counts as not exact, with its Wilson 95% interval and the number of jobs; RMS, "
+               "Hausdorff and manifold: over ok jobs, the means ± the half-width of their Student-t 95% interval "
+               "(the bars' whiskers are the same intervals); RMS and Hausdorff "
                "are distances to the true curve in units of its bounding-box diagonal; true topology: share of jobs "
                "with ground truth whose output is a manifold with the truth's closed and open components (points "
                "may be dropped or moved), with its Wilson 95% interval and the number of jobs.</p>")
@@ -490,6 +543,39 @@ def nonok_table(rows):
     return "".join(out)
 
 
+SUMMARY_COLUMNS = ("suite level algorithm jobs exact_k exact_n exact_pct exact_low exact_high "
+                   "true_topology_k true_topology_n true_topology_pct true_topology_low true_topology_high "
+                   "rms_n rms_mean rms_low rms_high hausdorff_n hausdorff_mean hausdorff_low hausdorff_high "
+                   "runtime_ms_mean").split()
+
+
+def write_summary_csv(run, path):
+    """One row per suite, level and algorithm: shares with Wilson 95% intervals (in %), means with Student-t 95%
+    intervals; empty where there is nothing to count."""
+    def cells(share):
+        k, n, low, high = share
+        return [k, n, "" if n == 0 else 100 * k / n, "" if low is None else low, "" if high is None else high]
+
+    def means(m):
+        mean_, n, low, high = m
+        return [n, "" if mean_ is None else mean_, "" if low is None else low, "" if high is None else high]
+
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        out = csv.writer(f, lineterminator="\n")
+        out.writerow(SUMMARY_COLUMNS)
+        for suite in run.suites:
+            rows = run.suite_rows(suite)
+            for level in sorted(ordered(r["level"] for r in rows), key=level_key):
+                for a in run.algorithms:
+                    group = [r for r in rows if r["algorithm"] == a and r["level"] == level]
+                    if not group:
+                        continue
+                    st = group_stats(group)
+                    out.writerow([suite, level, a, st["jobs"]] + cells(st["exact_interval"]) + cells(st["true_topology"])
+                                 + means(st["rms_interval"]) + means(st["hausdorff_interval"])
+                                 + ["" if st["runtime"] is None else st["runtime"]])
+
+
 def report_html(run, charts, out_dir, csv_path):
     title = f"curvebench report: {out_dir.resolve().name}"
     finished = datetime.datetime.fromtimestamp(csv_path.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
@@ -530,6 +616,7 @@ def main(argv):
         sys.exit(f"make_report: {csv_path} not found")
     run = Run(read_rows(csv_path))
     charts = make_charts(run, out_dir / "charts")
+    write_summary_csv(run, out_dir / "summary.csv")
     (out_dir / "report.html").write_text(report_html(run, charts, out_dir, csv_path), encoding="utf-8")
     print(f"make_report: {out_dir / 'report.html'} ({len(run.rows)} jobs, "
           f"{sum(len(c) for c in charts.values())} charts)")

@@ -121,6 +121,15 @@ check "messages are HTML-escaped" grep -qF '&lt;alpha_shape&gt; &amp; &quot;frie
 check "no raw markup from messages" bash -c '! grep -qF "<alpha_shape>" "$1"' _ "$html"
 check "job count is stated" grep -qF "<b>$job</b> jobs" "$html"
 
+# ---- summary.csv: a row per suite, level and algorithm, counted as the rows were written
+summary="$run/summary.csv"
+check "summary.csv has its header" bash -c 'head -n 1 "$1" | grep -q "^suite,level,algorithm,jobs,exact_k,exact_n,"' _ "$summary"
+cell() { grep "^$1,$2,$3," "$summary" | cut -d, -f"$4"; }  # cell SUITE LEVEL ALGORITHM FIELD
+check "EMST at epsilon 0.75: 0 of 2 exact" test "$(cell sampling epsilon=0.75 emst 5-6)" = "0,2"
+check "HNN-Crust at 0.75: its failure counts as not exact" test "$(cell sampling epsilon=0.75 hnn-crust 5-6)" = "1,2"
+check "summary rows: one per cell" test "$(($(wc -l <"$summary") - 1))" -eq $((3 * 4 + 3 * 3 + 5))
+check "summary table shows exact with its interval" grep -qF "0% [0–66] of 2" "$html"
+
 # ---- the headless check: passes as written, fails without a chart, passes again
 check "check_report passes and writes a screenshot" "$check_report" "$run" --screenshot "$work/report.png"
 check "the screenshot is a PNG" bash -c 'head -c 8 "$1" | grep -q PNG' _ "$work/report.png"
@@ -158,6 +167,16 @@ check "Wilson 81 of 263" wilson 81 263 25.53 36.62
 check "Wilson 15 of 148" wilson 15 148 6.24 16.05
 check "Wilson 0 of 10 starts at 0" wilson 0 10 0 27.8
 check "Wilson 10 of 10 ends at 100" wilson 10 10 72.2 100
+# Student-t interval of a mean: 1..5 has mean 3, s = 1.5811, t(4) = 2.7764: 3 -+ 1.9632.
+mean_ci() {  # mean_ci VALUES MEAN LOW HIGH
+  (cd "$root/bench/report" && /usr/bin/python3 -c "
+import sys, make_report
+m, n, low, high = make_report.mean_interval([$1])
+sys.exit(not (abs(m - $2) < 1e-3 and abs(low - $3) < 1e-3 and abs(high - $4) < 1e-3))")
+}
+check "mean interval of 1..5" mean_ci "1, 2, 3, 4, 5" 3 1.0368 4.9632
+check "mean interval of 2, 4 (t(1) = 12.706)" mean_ci "2, 4" 3 -9.706 15.706
+check "t quantiles beyond the table (df 60: 2.0003, df 120: 1.9799)" /usr/bin/python3 -c "import sys; sys.path.insert(0, '$root/bench/report'); import make_report as m; sys.exit(not (abs(m.t975(60) - 2.0003) < 2e-4 and abs(m.t975(120) - 1.9799) < 2e-4))"
 check "Wilson of nothing is empty" /usr/bin/python3 -c "import sys; sys.path.insert(0, '$root/bench/report'); import make_report; sys.exit(make_report.wilson([]) != (0, 0, None, None))"
 
 finish
