@@ -6,7 +6,8 @@
 //
 // DIR/ holds results.csv (sorted by job at the end), results.json, pictures/JOB.svg (a
 // reconstruction of at most 5,000 points on its ground truth, wrong edges red, missing
-// ones dashed) and the report (report.html and charts/, by bench/report/make_report.py).
+// ones dashed) and the report (report.html, summary.csv and charts/, by
+// bench/report/make_report.py).
 // Pictures: by default (Pictures::some) the first few failures of each algorithm in each
 // suite, in job order, and its first two jobs if they succeed, so that a run of tens of
 // thousands of jobs writes a gallery, not gigabytes.
