@@ -161,6 +161,8 @@ class Run:
             r["_exact"] = flag(r["exact"])
             if not r["_ok"] and r["input"] in truth_inputs:
                 r["_exact"] = False
+            # A failed job on an input with ground truth has the wrong topology, as it is not exact.
+            r["_true_topology"] = flag(r["true_topology"]) if r["_ok"] else (False if r["_exact"] is False else None)
 
     def suite_rows(self, suite):
         return [r for r in self.rows if r["suite"] == suite]
@@ -181,12 +183,43 @@ def group_stats(rows):
         "hausdorff": hausdorff[0],
         "hausdorff_interval": hausdorff,
         "manifold": percent(flag(r["manifold"]) for r in ok),
-        # A failed job on an input with ground truth has the wrong topology, as it is not exact.
-        "true_topology": wilson(flag(r["true_topology"]) if r["_ok"] else (False if r["_exact"] is False else None)
-                                for r in rows),
+        "true_topology": wilson(r["_true_topology"] for r in rows),
         "runtime": mean(number(r["runtime_ms"]) for r in ok),
         "failures": failures,
     }
+
+
+def mcnemar(b, c):
+    """Exact two-sided McNemar test: the p-value of b and c discordant pairs (binomial, 1/2)."""
+    n = b + c
+    if n == 0:
+        return 1.0
+    tail = sum(math.comb(n, i) for i in range(min(b, c) + 1)) / 2 ** n
+    return min(1.0, 2 * tail)
+
+
+def paired_flags(rows, algorithm, key):
+    """{instance: flag} of one algorithm's jobs; an instance is an input at a level."""
+    return {(r["input"], r["level"]): r[key] for r in rows if r["algorithm"] == algorithm and r[key] is not None}
+
+
+def leaders(rows, algorithms, key, alpha=0.05):
+    """The algorithms with the highest share of `key`, and those not significantly below it: McNemar's test on the
+    instances both ran, at level alpha. Returns ({algorithm: (share interval, p-value against the best)}, best)."""
+    shares = {a: wilson(f for f in paired_flags(rows, a, key).values()) for a in algorithms}
+    shares = {a: w for a, w in shares.items() if w[1] > 0}
+    if not shares:
+        return {}, None
+    best = max(shares, key=lambda a: (shares[a][0] / shares[a][1], shares[a][1]))
+    best_flags = paired_flags(rows, best, key)
+    result = {}
+    for a, w in shares.items():
+        flags = paired_flags(rows, a, key)
+        common = best_flags.keys() & flags.keys()
+        b = sum(1 for i in common if best_flags[i] and not flags[i])
+        c = sum(1 for i in common if flags[i] and not best_flags[i])
+        result[a] = (w, 1.0 if a == best else mcnemar(b, c))
+    return result, best
 
 
 # ---------------------------------------------------------------- charts
@@ -417,6 +450,7 @@ table { border-collapse: collapse; margin: 0.5em 0 1em; }
 th, td { border: 1px solid #ddd; padding: 3px 8px; text-align: left; vertical-align: top; }
 th { background: #f3f3f3; } td.n { text-align: right; font-variant-numeric: tabular-nums; }
 td.bad, .why { color: #c00; font-weight: bold; }
+table.matrix td { text-align: center; } table.matrix td.lead { font-weight: bold; }
 .swatch { display: inline-block; width: 0.8em; height: 0.8em; margin-right: 0.4em; vertical-align: baseline; }
 .charts { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
 .charts figure { margin: 0; } .charts img { max-width: 100%; }
@@ -576,6 +610,39 @@ def write_summary_csv(run, path):
                                  + ["" if st["runtime"] is None else st["runtime"]])
 
 
+def matrix_table(run, key, what):
+    """Algorithm x suite: the share of `key` over all levels, with its Wilson interval, as a heat map; the best of
+    each suite and those McNemar's test cannot tell from it (p >= 0.05, paired on the same instances) are marked."""
+    suites = [s for s in run.suites if any(r[key] is not None for r in run.suite_rows(s))]
+    if not suites:
+        return ""
+    columns = {s: leaders(run.suite_rows(s), run.algorithms, key) for s in suites}
+    out = [f"<table class=matrix><tr><th>{esc(what)}</th>" + "".join(f"<th>{esc(s)}</th>" for s in suites) + "</tr>"]
+    for a in run.algorithms:
+        cells = []
+        for s in suites:
+            result, best = columns[s]
+            if a not in result:
+                cells.append("<td>–</td>")
+                continue
+            (k, n, low, high), p = result[a]
+            share = 100 * k / n
+            lead = p >= 0.05
+            shade = f"hsl(120, 55%, {97 - 0.45 * share:.0f}%)"
+            mark = " ★" if lead else ""
+            title = f"{k} of {n}; McNemar p = {p:.3g} against {best}"
+            cells.append(f'<td class="n{" lead" if lead else ""}" style="background:{shade}" title="{esc(title)}">'
+                         f"{share:.0f}%{mark}<br><small>[{low:.0f}–{high:.0f}] of {n}</small></td>")
+        out.append(f"<tr><td>{esc(a)}</td>" + "".join(cells) + "</tr>")
+    out.append("</table>")
+    return "".join(out)
+
+
+MATRIX_NOTE = ("<p class=note>Each cell: the share over all the suite's levels, its Wilson 95% interval and the number "
+               "of jobs (a failed job counts as a miss). ★: the best of the column, and every algorithm McNemar's exact "
+               "test on the same instances cannot tell from it (p ≥ 0.05); hover a cell for its p-value.</p>")
+
+
 def report_html(run, charts, out_dir, csv_path):
     title = f"curvebench report: {out_dir.resolve().name}"
     finished = datetime.datetime.fromtimestamp(csv_path.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
@@ -595,6 +662,12 @@ def report_html(run, charts, out_dir, csv_path):
             f"{counted(len(run.algorithms), 'algorithm')}: {esc(', '.join(run.algorithms))}.<br>Status: "
             + esc(", ".join(f"{s or '(empty)'} {n}" for s, n in status_counts.most_common()))
             + '. <a href="#nonok">Non-ok jobs</a>.</p>')
+        exact_matrix = matrix_table(run, "_exact", "exact")
+        topology_matrix = matrix_table(run, "_true_topology", "true topology")
+        if exact_matrix:
+            parts.append("<h2>Algorithms × experiments</h2><h3>Exact reconstruction</h3>" + exact_matrix
+                         + "<h3>True topology (one manifold per true curve, whatever points are kept)</h3>"
+                         + topology_matrix + MATRIX_NOTE)
         parts.append("<h2>Overview</h2>" + chart_figures(charts[None]))
         for suite in run.suites:
             rows = run.suite_rows(suite)

@@ -129,6 +129,7 @@ check "EMST at epsilon 0.75: 0 of 2 exact" test "$(cell sampling epsilon=0.75 em
 check "HNN-Crust at 0.75: its failure counts as not exact" test "$(cell sampling epsilon=0.75 hnn-crust 5-6)" = "1,2"
 check "summary rows: one per cell" test "$(($(wc -l <"$summary") - 1))" -eq $((3 * 4 + 3 * 3 + 5))
 check "summary table shows exact with its interval" grep -qF "0% [0–66] of 2" "$html"
+check "the first screen is the algorithm x experiment matrix" grep -qF "<h2>Algorithms × experiments</h2>" "$html"
 
 # ---- the headless check: passes as written, fails without a chart, passes again
 check "check_report passes and writes a screenshot" "$check_report" "$run" --screenshot "$work/report.png"
@@ -177,6 +178,15 @@ sys.exit(not (abs(m - $2) < 1e-3 and abs(low - $3) < 1e-3 and abs(high - $4) < 1
 check "mean interval of 1..5" mean_ci "1, 2, 3, 4, 5" 3 1.0368 4.9632
 check "mean interval of 2, 4 (t(1) = 12.706)" mean_ci "2, 4" 3 -9.706 15.706
 check "t quantiles beyond the table (df 60: 2.0003, df 120: 1.9799)" /usr/bin/python3 -c "import sys; sys.path.insert(0, '$root/bench/report'); import make_report as m; sys.exit(not (abs(m.t975(60) - 2.0003) < 2e-4 and abs(m.t975(120) - 1.9799) < 2e-4))"
+# McNemar's exact test: b = 10, c = 0 gives 2 / 2^10; b = 8, c = 2 gives 2 (1 + 10 + 45) / 2^10.
+check "McNemar p-values" /usr/bin/python3 -c "import sys; sys.path.insert(0, '$root/bench/report'); import make_report as m; sys.exit(not (abs(m.mcnemar(10, 0) - 2 / 1024) < 1e-12 and abs(m.mcnemar(2, 8) - 0.109375) < 1e-12 and m.mcnemar(5, 5) == 1 and m.mcnemar(0, 0) == 1))"
+# The leaders: A exact on 20 instances, B on the first 10 (p = 0.002: not a leader), C on 19 (p = 1: a leader).
+check "leaders by McNemar" /usr/bin/python3 -c "
+import sys; sys.path.insert(0, '$root/bench/report'); import make_report as m
+rows = [{'input': str(i), 'level': '', 'algorithm': a, '_exact': ok} for i in range(20)
+        for a, ok in (('A', True), ('B', i < 10), ('C', i != 5))]
+result, best = m.leaders(rows, ['A', 'B', 'C'], '_exact')
+sys.exit(not (best == 'A' and result['B'][1] < 0.05 and result['C'][1] >= 0.05 and result['A'][0][:2] == (20, 20)))"
 check "Wilson of nothing is empty" /usr/bin/python3 -c "import sys; sys.path.insert(0, '$root/bench/report'); import make_report; sys.exit(make_report.wilson([]) != (0, 0, None, None))"
 
 finish
