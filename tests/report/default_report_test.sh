@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job's report as a person sees it: runs the `default` suite, then loads its
 # report.html in headless Chromium (scripts/check_report.sh), which fails if any chart or
-# reconstruction picture is missing or broken. Keeps a screenshot in the build tree.
+# reconstruction picture is missing or broken, and checks the output stays under 50 MB.
+# Keeps a screenshot in the build tree.
 # Usage: default_report_test.sh PATH/TO/curvebench SCREENSHOT.png
 set -euo pipefail
 curvebench="$1" screenshot="$2"
@@ -12,3 +13,8 @@ trap 'rm -rf "$work"' EXIT
 # job reaches it, and its timeout row is in the report either way.
 "$curvebench" run default -o "$work/default" -q --timeout 20
 "$root/scripts/check_report.sh" "$work/default" --screenshot "$screenshot"
+# The default pictures (the first failures and jobs of each algorithm and suite) keep the
+# run's output small enough to keep and share.
+megabytes=$(du -s --apparent-size -B1M "$work/default" | cut -f1)
+echo "default run output: $megabytes MB"
+if ((megabytes >= 50)); then echo "default run output: $megabytes MB, not under 50 MB" >&2; exit 1; fi
