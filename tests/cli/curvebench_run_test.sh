@@ -24,7 +24,7 @@ run=(run sampling -a crust,nn-crust,hnn-crust -j 1 --no-report -q)
 "$curvebench" "${run[@]}" -o "$work/full"
 check "an uninterrupted run succeeds" test $? -eq 0
 total=$(($(wc -l <"$work/full/results.csv") - 1))
-check "one row per job: 18 inputs x 3 algorithms" test "$total" -eq 54
+check "one row per job: 30 curves x 3 levels x 3 algorithms" test "$total" -eq 270
 check "the issue's columns are there" "$python" -c '
 import csv, sys
 header = next(csv.reader(open(sys.argv[1])))
@@ -38,7 +38,7 @@ sys.exit(0 if all(r["status"] == "ok" for r in csv.DictReader(open(sys.argv[1]))
 check "nn-crust is exact at epsilon 0.25" "$python" -c '
 import csv, sys
 rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["algorithm"] == "nn-crust" and r["level"] == "epsilon=0.25"]
-sys.exit(0 if len(rows) == 6 and all(r["exact"] == "1" for r in rows) else 1)' "$work/full/results.csv"
+sys.exit(0 if len(rows) == 30 and all(r["exact"] == "1" for r in rows) else 1)' "$work/full/results.csv"
 
 # The same run, killed (with its workers) once a third of the rows are in, then resumed.
 setsid "$curvebench" "${run[@]}" -o "$work/cut" &
