@@ -203,21 +203,23 @@ def paired_flags(rows, algorithm, key):
     return {(r["input"], r["level"]): r[key] for r in rows if r["algorithm"] == algorithm and r[key] is not None}
 
 
-def leaders(rows, algorithms, key, alpha=0.05):
-    """The algorithms with the highest share of `key`, and those not significantly below it: McNemar's test on the
-    instances both ran, at level alpha. Returns ({algorithm: (share interval, p-value against the best)}, best)."""
-    shares = {a: wilson(f for f in paired_flags(rows, a, key).values()) for a in algorithms}
+LEADER_ALPHA = 0.05  # McNemar's level: an algorithm with p >= it against the best leads too
+
+
+def leaders(rows, algorithms, key):
+    """The algorithms with the highest share of `key`, and those not significantly below it (McNemar's test on the
+    instances both ran). Returns ({algorithm: (share interval, p-value against the best)}, best)."""
+    flags = {a: paired_flags(rows, a, key) for a in algorithms}
+    shares = {a: wilson(f.values()) for a, f in flags.items()}
     shares = {a: w for a, w in shares.items() if w[1] > 0}
     if not shares:
         return {}, None
     best = max(shares, key=lambda a: (shares[a][0] / shares[a][1], shares[a][1]))
-    best_flags = paired_flags(rows, best, key)
     result = {}
     for a, w in shares.items():
-        flags = paired_flags(rows, a, key)
-        common = best_flags.keys() & flags.keys()
-        b = sum(1 for i in common if best_flags[i] and not flags[i])
-        c = sum(1 for i in common if flags[i] and not best_flags[i])
+        common = flags[best].keys() & flags[a].keys()
+        b = sum(1 for i in common if flags[best][i] and not flags[a][i])
+        c = sum(1 for i in common if flags[a][i] and not flags[best][i])
         result[a] = (w, 1.0 if a == best else mcnemar(b, c))
     return result, best
 
@@ -627,7 +629,7 @@ def matrix_table(run, key, what):
                 continue
             (k, n, low, high), p = result[a]
             share = 100 * k / n
-            lead = p >= 0.05
+            lead = p >= LEADER_ALPHA
             shade = f"hsl(120, 55%, {97 - 0.45 * share:.0f}%)"
             mark = " ★" if lead else ""
             title = f"{k} of {n}; McNemar p = {p:.3g} against {best}"
