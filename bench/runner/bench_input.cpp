@@ -16,7 +16,7 @@ namespace {
 
 using Settings = std::map<std::string, double, std::less<>>;
 
-const std::string_view known_keys[] = {"epsilon", "walk",      "rho",      "uniform", "per-circle",
+const std::string_view known_keys[] = {"epsilon", "walk",      "rho",      "uniform", "per-circle", "crossings",
                                        "noise",   "lfs-noise", "outliers", "seed"};
 const std::string_view sampler_keys[] = {"epsilon", "walk", "rho", "uniform", "per-circle"};
 
@@ -85,6 +85,15 @@ geometry::Sample drawn(const geometry::Local_feature_size& lfs, const Settings& 
       lfs, static_cast<std::size_t>(std::ceil(lfs.curve().length() * per_circle / (2 * std::numbers::pi))));
 }
 
+// The sampler's points, with a sample at every crossing if `crossings=1`.
+geometry::Sample sampled(const geometry::Local_feature_size& lfs, const Settings& settings, std::string_view name) {
+  geometry::Sample sample = drawn(lfs, settings, name);
+  const auto crossings = settings.find("crossings");
+  if (crossings == settings.end() || crossings->second == 0) return sample;
+  if (crossings->second != 1) throw std::invalid_argument("input " + std::string(name) + ": crossings must be 0 or 1");
+  return geometry::with_crossing_samples(lfs, std::move(sample));
+}
+
 // A curve spec with its file resolved: svg:FILE, truth:POINTS:EDGES.
 std::string resolved_spec(std::string_view spec) {
   if (spec.starts_with("svg:")) return "svg:" + resolve_data_path(spec.substr(4)).string();
@@ -132,7 +141,7 @@ std::vector<Bench_input> make_bench_inputs(std::span<const std::string> names) {
     const std::vector<Point> points = geometry::read_point_file(resolve_data_path(source.substr(5))).points;
     for (const std::string& name : names) {
       const Settings settings = parse_settings(name);
-      for (const std::string_view key : {"epsilon", "walk", "rho", "uniform", "per-circle", "lfs-noise"})
+      for (const std::string_view key : {"epsilon", "walk", "rho", "uniform", "per-circle", "crossings", "lfs-noise"})
         if (settings.contains(key))
           throw std::invalid_argument("input " + name + ": a point file takes no " + std::string(key));
       geometry::Sample sample;
@@ -149,7 +158,7 @@ std::vector<Bench_input> make_bench_inputs(std::span<const std::string> names) {
   const auto curve = std::make_shared<const Polyline>(dense_polyline(lfs));
   for (const std::string& name : names) {
     const Settings settings = parse_settings(name);
-    geometry::Sample sample = perturbed(drawn(lfs, settings, name), settings, &lfs);
+    geometry::Sample sample = perturbed(sampled(lfs, settings, name), settings, &lfs);
     Bench_input input{name, {}, geometry::canonical_edges(sample.edges), curve};
     if (!settings.contains("noise") && !settings.contains("lfs-noise") && !settings.contains("outliers")) {
       input.epsilon = certify::measure_epsilon(lfs, sample.points, 0).epsilon;

@@ -13,6 +13,9 @@
 //   uniform=N     N points at equal arc-length steps
 //   per-circle=N  equal arc-length steps of 2 pi / N: N points per unit circle (the
 //                 survey's sharp-corner family; the first sample is the corner)
+// and optionally
+//   crossings=1   a sample at every crossing, shared by both branches (degree 4 in the
+//                 ground truth; geometry/sampling/sampling.h, with_crossing_samples)
 // and any of these perturbations, applied in this order (a file takes noise and outliers):
 //   noise=D       uniform noise of extent D x bounding-box diagonal
 //   lfs-noise=D   noise along the normal, uniform in [-D, D] x lfs

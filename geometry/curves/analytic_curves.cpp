@@ -4,14 +4,19 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <numeric>
 #include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Search_traits_2.h>
 #include <CGAL/box_intersection_d.h>
 
+#include "geometry/curves/curve_crossings.h"
 #include "geometry/curves/curve_name.h"
 
 namespace curvebench::geometry {
@@ -135,7 +140,9 @@ class Fourier_piece final : public Angular_piece {
     int k;
     Vector cosine, sine;
   };
-  explicit Fourier_piece(std::vector<Harmonic> harmonics) : Angular_piece(0, two_pi), harmonics_(std::move(harmonics)) {}
+  // θ runs over [start, start + sweep]: the whole closed curve by default.
+  explicit Fourier_piece(std::vector<Harmonic> harmonics, double start = 0, double sweep = two_pi)
+      : Angular_piece(start, sweep), harmonics_(std::move(harmonics)) {}
 
  private:
   // Σ_k k^order (A_k, B_k) · (cos, sin)(kθ + order π/2): the order-th θ-derivative.
@@ -294,10 +301,14 @@ Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& p
                             std::make_shared<Fourier_piece>(simple_fourier_terms(seed, parameters)));
 }
 
-Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components) {
+Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components,
+                            double separation) {
   if (components < 1 || components > 64) throw std::invalid_argument("fourier: components must be in [1, 64]");
+  require_positive(separation, "fourier: separation");
   if (components == 1) return random_fourier_curve(seed, parameters);
-  Curve curve{fourier_name(seed, parameters) + ",components=" + std::to_string(components), {}};
+  std::string name = fourier_name(seed, parameters) + ",components=" + std::to_string(components);
+  if (separation != component_gap) name += ",separation=" + format_number(separation);
+  Curve curve{std::move(name), {}};
   double x = 0;
   for (int c = 0; c < components; ++c) {
     auto terms = simple_fourier_terms(seed + c, parameters);
@@ -305,11 +316,195 @@ Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& 
         single_piece_curve("", std::make_shared<Fourier_piece>(terms)).bounding_box(1e-6);
     // A constant term (k = 0) moves the curve: its derivatives vanish.
     terms.push_back({0, Vector(x - box.xmin(), 0), Vector(0, 0)});
-    x += box.xmax() - box.xmin() + component_gap;
+    x += box.xmax() - box.xmin() + separation;
     curve.components.emplace_back(
         std::vector<std::shared_ptr<const Curve_piece>>{std::make_shared<Fourier_piece>(std::move(terms))}, true);
   }
   return curve;
+}
+
+Curve random_fourier_arc(std::uint64_t seed, const Fourier_curve_parameters& parameters, double gap) {
+  if (!(gap > 0 && gap < 1)) throw std::invalid_argument("fourier: gap must be in (0, 1), not " + format_number(gap));
+  Curve curve{fourier_name(seed, parameters) + ",gap=" + format_number(gap), {}};
+  // The gap is centred on θ = π, opposite the closed curve's start.
+  const double start = std::numbers::pi * (1 + gap), sweep = two_pi * (1 - gap);
+  curve.components.emplace_back(std::vector<std::shared_ptr<const Curve_piece>>{std::make_shared<Fourier_piece>(
+                                    simple_fourier_terms(seed, parameters), start, sweep)},
+                                false);
+  return curve;
+}
+
+namespace {
+
+std::vector<Point> closed_polyline(const Fourier_piece& piece, int samples) {
+  std::vector<Point> points;
+  for (int i = 0; i < samples; ++i) points.push_back(piece.point(double(i) / samples));
+  return points;
+}
+
+// The smallest distance from a point of `points` to the dense points of `tree`: within
+// (chord length)^2 / (8 distance) of the distance between the curves they sample.
+using Point_tree = CGAL::Kd_tree<CGAL::Search_traits_2<Kernel>>;
+double smallest_distance(const Point_tree& tree, const std::vector<Point>& points) {
+  double smallest = HUGE_VAL;
+  for (const Point& p : points) {
+    const CGAL::Orthogonal_k_neighbor_search<CGAL::Search_traits_2<Kernel>> nearest(tree, p, 1);
+    smallest = std::min(smallest, std::sqrt(nearest.begin()->second));
+  }
+  return smallest;
+}
+
+// Whether the closed polylines a and b cross or touch, by exact predicates.
+bool polylines_meet(const std::vector<Point>& a, const std::vector<Point>& b) {
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+  const auto edge = [](const std::vector<Point>& points, std::size_t i) {
+    return Kernel::Segment_2(points[i], points[(i + 1) % points.size()]);
+  };
+  std::vector<Box> boxes_a, boxes_b;
+  for (std::size_t i = 0; i < a.size(); ++i) boxes_a.emplace_back(edge(a, i).bbox(), i);
+  for (std::size_t i = 0; i < b.size(); ++i) boxes_b.emplace_back(edge(b, i).bbox(), i);
+  bool meet = false;
+  CGAL::box_intersection_d(boxes_a.begin(), boxes_a.end(), boxes_b.begin(), boxes_b.end(),
+                           [&](const Box& i, const Box& j) {
+                             meet = meet || CGAL::do_intersect(edge(a, i.info()), edge(b, j.info()));
+                           });
+  return meet;
+}
+
+}  // namespace
+
+Curve nested_fourier_curves(std::uint64_t seed, double separation) {
+  require_positive(separation, "nested: separation");
+  const Fourier_curve_parameters parameters;
+  const auto outer_terms = simple_fourier_terms(seed, parameters);
+  const Fourier_piece outer(outer_terms);
+  const std::vector<Point> outer_points = closed_polyline(outer, simplicity_samples);
+  const Point_tree tree(outer_points.begin(), outer_points.end());
+  const auto polygon = CGAL::Polygon_2<Kernel>(outer_points.begin(), outer_points.end());
+  for (std::uint64_t attempt = 0; attempt < 100; ++attempt) {
+    const auto inner_terms = simple_fourier_terms(derived_seed(seed + 1, attempt), parameters);
+    const auto scaled = [&](double scale) {
+      auto terms = inner_terms;
+      for (auto& h : terms) h.cosine = scale * h.cosine, h.sine = scale * h.sine;
+      return terms;
+    };
+    const auto gap_at = [&](double scale) {
+      return smallest_distance(tree, closed_polyline(Fourier_piece(scaled(scale)), 2048));
+    };
+    // Scaling about the origin (the centre of the first harmonic, as of the outer curve's)
+    // narrows the gap monotonically while the copy stays inside: bisect on the scale.
+    double low = 1e-3, high = 1;
+    if (gap_at(low) <= separation) break;  // the outer curve is too narrow for this separation
+    for (int step = 0; step < 50; ++step) {
+      const double middle = (low + high) / 2;
+      const std::vector<Point> inner_points = closed_polyline(Fourier_piece(scaled(middle)), 2048);
+      const bool inside = polygon.bounded_side(inner_points.front()) == CGAL::ON_BOUNDED_SIDE;
+      (inside && smallest_distance(tree, inner_points) > separation ? low : high) = middle;
+    }
+    const Fourier_piece inner(scaled(low));
+    const std::vector<Point> inner_points = closed_polyline(inner, simplicity_samples);
+    if (polygon.bounded_side(inner_points.front()) != CGAL::ON_BOUNDED_SIDE || polylines_meet(outer_points, inner_points))
+      continue;  // not star-shaped enough about the origin: draw another inner curve
+    Curve curve{"nested:seed=" + std::to_string(seed) + ",separation=" + format_number(separation), {}};
+    for (const auto& terms : {outer_terms, scaled(low)}) {
+      auto piece = std::make_shared<Fourier_piece>(terms);
+      curve.components.emplace_back(std::vector<std::shared_ptr<const Curve_piece>>{std::move(piece)}, true);
+    }
+    return curve;
+  }
+  throw std::invalid_argument("nested: no inner curve " + format_number(separation) + " inside fourier:seed=" +
+                              std::to_string(seed) + "; lower the separation");
+}
+
+namespace {
+
+// r(θ) (cos θ, sin θ) with r growing linearly from `inner` to 1 over the sweep.
+class Spiral_piece final : public Angular_piece {
+ public:
+  Spiral_piece(double start, double sweep, double inner)
+      : Angular_piece(start, sweep), start_(start), inner_(inner), growth_((1 - inner) / sweep) {}
+
+ private:
+  double radius(double theta) const { return inner_ + growth_ * (theta - start_); }
+  static Vector unit(double theta) { return {std::cos(theta), std::sin(theta)}; }
+  Point at(double theta) const override { return CGAL::ORIGIN + radius(theta) * unit(theta); }
+  Vector velocity(double theta) const override {
+    return growth_ * unit(theta) + radius(theta) * unit(theta).perpendicular(CGAL::COUNTERCLOCKWISE);
+  }
+  Vector acceleration(double theta) const override {
+    return 2 * growth_ * unit(theta).perpendicular(CGAL::COUNTERCLOCKWISE) - radius(theta) * unit(theta);
+  }
+
+  double start_, inner_, growth_;
+};
+
+}  // namespace
+
+Curve random_spiral(std::uint64_t seed) {
+  std::mt19937_64 engine(seed);
+  const double turns = 1.75 + 0.75 * symmetric_unit(engine);         // [1, 2.5)
+  const double inner = 0.275 + 0.125 * symmetric_unit(engine);       // [0.15, 0.4)
+  const double start = std::numbers::pi * (1 + symmetric_unit(engine));
+  Curve curve{"spiral:seed=" + std::to_string(seed), {}};
+  curve.components.emplace_back(
+      std::vector<std::shared_ptr<const Curve_piece>>{std::make_shared<Spiral_piece>(start, two_pi * turns, inner)},
+      false);
+  return curve;
+}
+
+namespace {
+
+// The crossings of a closed curve of one component if they are all clean, else -1: the
+// curve regular (turning at most 45° between samples), each crossing at an angle of at
+// least 20° between its branches, and the crossings at least 0.05 apart, so that a
+// sampling can tell them apart.
+int transversal_crossings(const Curve& curve, int samples) {
+  const Curve_component& component = curve.components.front();
+  Vector previous = component.derivative(0);
+  for (int i = 1; i <= samples; ++i) {
+    const Vector d = component.derivative(double(i % samples) / samples);
+    if (std::abs(std::atan2(CGAL::determinant(previous, d), previous * d)) > std::numbers::pi / 4) return -1;
+    previous = d;
+  }
+  std::vector<std::vector<double>> parameters(1);
+  for (int i = 0; i < samples; ++i) parameters[0].push_back(double(i) / samples);
+  const std::vector<Curve_crossing> crossings = curve_crossings(curve, parameters);
+  for (std::size_t i = 0; i < crossings.size(); ++i) {
+    const Vector u = component.unit_tangent(crossings[i].first.parameter);
+    const Vector v = component.unit_tangent(crossings[i].second.parameter);
+    if (std::abs(CGAL::determinant(u, v)) < std::sin(std::numbers::pi / 9)) return -1;
+    for (std::size_t j = 0; j < i; ++j)
+      if (CGAL::squared_distance(crossings[i].point, crossings[j].point) < 0.05 * 0.05) return -1;
+  }
+  return static_cast<int>(crossings.size());
+}
+
+}  // namespace
+
+Curve lissajous_curve(int a, int b, std::uint64_t seed) {
+  if (a < 1 || b <= a || b > 8 || std::gcd(a, b) != 1)
+    throw std::invalid_argument("lissajous: a and b must be coprime with 1 <= a < b <= 8");
+  const std::string name = "lissajous:a=" + std::to_string(a) + ",b=" + std::to_string(b) + ",seed=" + std::to_string(seed);
+  const int crossings = lissajous_crossings(a, b);
+  for (std::uint64_t attempt = 0; attempt < 1000; ++attempt) {
+    std::mt19937_64 engine(derived_seed(seed, attempt));
+    const double phase = std::numbers::pi * symmetric_unit(engine);
+    const double width = 1.25 + 0.25 * symmetric_unit(engine);
+    // x = width sin(a θ + phase), y = sin(b θ), plus a small smooth perturbation.
+    std::vector<Fourier_piece::Harmonic> terms{
+        {a, Vector(width * std::sin(phase), 0), Vector(width * std::cos(phase), 0)}, {b, Vector(0, 0), Vector(0, 1)}};
+    for (int k = 1; k <= 4; ++k) {
+      const double scale = 0.04 / k;
+      const double ax = symmetric_unit(engine), ay = symmetric_unit(engine);
+      const double bx = symmetric_unit(engine), by = symmetric_unit(engine);
+      terms.push_back({k, scale * Vector(ax, ay), scale * Vector(bx, by)});
+    }
+    Curve curve{name, {}};
+    curve.components.emplace_back(
+        std::vector<std::shared_ptr<const Curve_piece>>{std::make_shared<Fourier_piece>(terms)}, true);
+    if (transversal_crossings(curve, simplicity_samples) == crossings) return curve;
+  }
+  throw std::invalid_argument(name + ": no curve with " + std::to_string(crossings) + " transversal crossings");
 }
 
 }  // namespace curvebench::geometry

@@ -47,11 +47,46 @@ struct Fourier_curve_parameters {
 Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& parameters = {});
 
 // Several components for multi-curve experiments: random_fourier_curve(seed + c, parameters)
-// for c = 0 .. components - 1, in a row along x, component_gap apart beyond their bounding
-// boxes (wide against every component's features, so each keeps its own lfs near it).
-// One component is random_fourier_curve itself; otherwise the name ends in
-// ",components=K". Throws std::invalid_argument for components outside [1, 64].
+// for c = 0 .. components - 1, in a row along x, `separation` apart beyond their bounding
+// boxes (the default, component_gap, is wide against every component's features, so each
+// keeps its own lfs near it; a small separation makes the gap set lfs there: at most
+// separation / 2 where two components face each other). One component is
+// random_fourier_curve itself; otherwise the name ends in ",components=K" and, unless the
+// separation is the default, ",separation=D". Throws std::invalid_argument for components
+// outside [1, 64] or a separation that is not positive and finite.
 inline constexpr double component_gap = 1.5;
-Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components);
+Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components,
+                            double separation = component_gap);
+
+// The survey's open curves ("Open Curves": "samples missing from an object boundary"):
+// random_fourier_curve(seed, parameters) with the fraction `gap` of its parameter range
+// removed, centred opposite its start. A small gap is a closed curve with a hole in its
+// sampling; a gap near 1/2 is an arc. One open component. Name "fourier:...,gap=G".
+// Throws std::invalid_argument unless 0 < gap < 1.
+Curve random_fourier_arc(std::uint64_t seed, const Fourier_curve_parameters& parameters, double gap);
+
+// A hole: random_fourier_curve(seed) and, inside it, another random Fourier curve scaled
+// about the origin so that the two are `separation` apart (the smallest distance between
+// dense polylines of both, within 1e-3 of it; lfs is at most separation / 2 where they
+// face each other). The inner curve is re-drawn while its scaled copy would cross the
+// outer one (exact predicates). Two closed components, outer first. Name
+// "nested:seed=S,separation=D". Throws std::invalid_argument for a separation that is not
+// positive and finite, or too wide for the outer curve.
+Curve nested_fourier_curves(std::uint64_t seed, double separation);
+
+// An open Archimedean spiral r(θ) growing linearly from `inner` to 1 over `turns` turns,
+// turns in [1, 2.5) and inner in [0.15, 0.4) drawn from the seed, as is the starting
+// angle. One open component. Name "spiral:seed=S".
+Curve random_spiral(std::uint64_t seed);
+
+// A smooth closed curve that crosses itself transversally (survey, "Curves with
+// Self-Intersections"): the Lissajous figure (w sin(aθ + φ), sin(bθ)) with the phase φ and
+// width w in [1, 1.5) drawn from the seed, plus small random harmonics 1..4 (0.04 / k).
+// For coprime a < b and a generic phase it crosses itself lissajous_crossings(a, b) times;
+// draws are repeated until it does, every crossing at 20° or more and the crossings 0.05 or
+// more apart (curve_crossings on 8192 chords). Name "lissajous:a=A,b=B,seed=S". Throws
+// std::invalid_argument unless a and b are coprime, 1 <= a < b <= 8.
+Curve lissajous_curve(int a, int b, std::uint64_t seed);
+constexpr int lissajous_crossings(int a, int b) { return 2 * a * b - a - b; }
 
 }  // namespace curvebench::geometry

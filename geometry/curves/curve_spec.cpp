@@ -11,6 +11,7 @@
 #include "geometry/curves/curve_name.h"
 #include "geometry/curves/glyph_curves.h"
 #include "geometry/curves/polyline_curve.h"
+#include "geometry/curves/star_polygon.h"
 #include "geometry/curves/svg_path.h"
 
 namespace curvebench::geometry {
@@ -111,14 +112,31 @@ Curve make_curve(std::string_view spec) {
     return superellipse(p.get("a", 1.0), p.get("b", 1.0), p.get("n", 4.0));
   }
   if (kind == "fourier") {
-    const Parameters p(kind, rest, {"seed", "harmonics", "amplitude", "decay", "components"});
+    const Parameters p(kind, rest, {"seed", "harmonics", "amplitude", "decay", "components", "separation", "gap"});
     const Fourier_curve_parameters defaults;
-    return random_fourier_curves(p.get<std::uint64_t>("seed", 0),
-                                 {p.get("harmonics", defaults.harmonics), p.get("amplitude", defaults.amplitude),
-                                  p.get("decay", defaults.decay)},
-                                 p.get("components", 1));
+    const Fourier_curve_parameters parameters{p.get("harmonics", defaults.harmonics),
+                                              p.get("amplitude", defaults.amplitude), p.get("decay", defaults.decay)};
+    const auto seed = p.get<std::uint64_t>("seed", 0);
+    const double gap = p.get("gap", 0.0);
+    if (gap == 0) return random_fourier_curves(seed, parameters, p.get("components", 1), p.get("separation", component_gap));
+    if (p.get("components", 1) != 1 || p.get("separation", component_gap) != component_gap)
+      fail("fourier: a gap opens one curve; it takes no components or separation");
+    return random_fourier_arc(seed, parameters, gap);
+  }
+  if (kind == "nested") {
+    const Parameters p(kind, rest, {"seed", "separation"});
+    return nested_fourier_curves(p.get<std::uint64_t>("seed", 0), p.get("separation", 0.1));
+  }
+  if (kind == "spiral") return random_spiral(Parameters(kind, rest, {"seed"}).get<std::uint64_t>("seed", 0));
+  if (kind == "lissajous") {
+    const Parameters p(kind, rest, {"a", "b", "seed"});
+    return lissajous_curve(p.get("a", 1), p.get("b", 2), p.get<std::uint64_t>("seed", 0));
   }
   if (kind == "corner") return sharp_corner_curve(Parameters(kind, rest, {"angle"}).get("angle", 30.0));
+  if (kind == "star") {
+    const Parameters p(kind, rest, {"seed", "angle", "rounding"});
+    return star_polygon(p.get<std::uint64_t>("seed", 0), p.get("angle", 60.0), p.get("rounding", 0.0));
+  }
   if (kind == "svg") {
     if (rest.empty()) fail("svg needs a file: svg:FILE");
     return read_svg_curve(rest);
@@ -132,7 +150,8 @@ Curve make_curve(std::string_view spec) {
     if (points.empty() || edges.empty()) fail("truth needs two files: truth:POINTFILE:EDGEFILE");
     return polyline_curve(read_ground_truth(points, edges), std::string(spec));
   }
-  fail("unknown kind " + quoted(kind) + " (circle, ellipse, superellipse, fourier, corner, svg, glyph, truth)");
+  fail("unknown kind " + quoted(kind) +
+       " (circle, ellipse, superellipse, fourier, nested, spiral, lissajous, corner, star, svg, glyph, truth)");
 }
 
 std::vector<std::string> expand_curve_specs(std::string_view spec) {

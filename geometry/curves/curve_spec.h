@@ -5,10 +5,16 @@
 //   circle[:r=R]                                   default r=1
 //   ellipse[:a=A,b=B]                              default a=2,b=1
 //   superellipse[:a=A,b=B,n=N]                     default a=1,b=1,n=4
-//   fourier[:seed=S,harmonics=H,amplitude=A,decay=D,components=K]  default seed=0,
-//                                                  components=1, the rest as in
+//   fourier[:seed=S,harmonics=H,amplitude=A,decay=D,components=K,separation=D]
+//                                                  default seed=0, components=1,
+//                                                  separation=1.5, the rest as in
 //                                                  Fourier_curve_parameters
+//   fourier:...,gap=G                              the same curve opened by a gap (0 < G < 1)
+//   nested[:seed=S,separation=D]                   a Fourier curve inside another; D=0.1
+//   spiral[:seed=S]                                an open spiral
+//   lissajous[:a=A,b=B,seed=S]                     crossing itself 2ab-a-b times; a=1,b=2
 //   corner[:angle=DEGREES]                         default angle=30
+//   star[:seed=S,angle=DEGREES,rounding=R]         a star polygon; angle=60, rounding=0
 //   svg:FILE                                       every path of an SVG file
 //   glyph:[FONTFILE:]CHAR                          CHAR: one UTF-8 character or U+XXXX
 //                                                  (':' must be U+003A); default font DejaVu Sans

@@ -14,6 +14,7 @@ namespace {
 
 constexpr double safe_margin = 1e-3;  // the measure searches its own grid: stay clear of the target
 constexpr int bisection_steps = 60;
+constexpr std::size_t no_index = std::numeric_limits<std::size_t>::max();
 
 double piece_count(const Curve_component& component) { return static_cast<double>(component.piece_count()); }
 
@@ -313,6 +314,67 @@ Sample safe_epsilon_sampling(const Local_feature_size& lfs, double epsilon, doub
 Sample rho_sampling(const Local_feature_size& lfs, double rho, double minimum_lfs) {
   check_walk_arguments("rho sampling", rho, minimum_lfs);
   return assemble(lfs, walk_curve(lfs, [&](std::size_t c) { return Rho_step(lfs, c, rho, minimum_lfs); }), minimum_lfs);
+}
+
+Sample with_crossing_samples(const Local_feature_size& lfs, Sample sample) {
+  // A crossing is the sharp point that appears once per branch through it.
+  struct Crossing {
+    Point point;
+    std::vector<Curve_location> branches;
+    std::size_t index = no_index;  // its point in the new sample, once made
+  };
+  std::vector<Crossing> crossings;
+  for (const Sharp_point& sharp : lfs.sharp_points()) {
+    const auto same = std::ranges::find(crossings, sharp.point, &Crossing::point);
+    if (same == crossings.end())
+      crossings.push_back({sharp.point, {sharp.location}});
+    else
+      same->branches.push_back(sharp.location);
+  }
+  std::erase_if(crossings, [](const Crossing& c) { return c.branches.size() < 2; });
+  if (crossings.empty()) return sample;
+
+  // Per component, its samples and its crossing branches in order along it (an entry is a
+  // sample's index, or a crossing's as no_index - 1 - crossing).
+  const std::size_t components = lfs.curve().components.size();
+  std::vector<std::vector<std::pair<double, std::size_t>>> along(components);
+  for (std::size_t i = 0; i < sample.size(); ++i)
+    if (sample.labels[i] == Sample_label::curve_point)
+      along[sample.locations[i].component].emplace_back(sample.locations[i].parameter, i);
+  for (std::size_t x = 0; x < crossings.size(); ++x)
+    for (const Curve_location& branch : crossings[x].branches) {
+      auto& entries = along[branch.component];
+      const bool sampled = std::ranges::any_of(entries, [&](const auto& e) { return e.first == branch.parameter; });
+      if (!sampled) entries.emplace_back(branch.parameter, no_index - 1 - x);
+    }
+
+  Sample result;
+  result.minimum_lfs = sample.minimum_lfs;
+  const auto add = [&](const Point& p, double local, const Curve_location& location) {
+    if (local < result.minimum_lfs) result.floored.push_back(result.size());
+    result.points.push_back(p);
+    result.lfs.push_back(local);
+    result.locations.push_back(location);
+    result.labels.push_back(Sample_label::curve_point);
+    return result.size() - 1;
+  };
+  for (std::size_t c = 0; c < components; ++c) {
+    auto& entries = along[c];
+    std::ranges::sort(entries);
+    std::vector<std::size_t> chain;
+    for (const auto& [parameter, entry] : entries) {
+      if (entry < sample.size()) {
+        chain.push_back(add(sample.points[entry], sample.lfs[entry], sample.locations[entry]));
+        continue;
+      }
+      Crossing& crossing = crossings[no_index - 1 - entry];
+      if (crossing.index == no_index) crossing.index = add(crossing.point, 0, {c, parameter});
+      chain.push_back(crossing.index);
+    }
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i) result.edges.emplace_back(chain[i], chain[i + 1]);
+    if (lfs.curve().components[c].closed() && chain.size() >= 3) result.edges.emplace_back(chain.back(), chain.front());
+  }
+  return result;
 }
 
 Sample uniform_sampling(const Local_feature_size& lfs, std::size_t n) {

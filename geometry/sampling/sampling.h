@@ -7,7 +7,8 @@
 // Near a sharp point lfs -> 0 and a walk would never pass it: the lfs-driven samplers
 // place a sample on every corner and count lfs below `minimum_lfs` as `minimum_lfs`
 // (Sample::floored lists where). Crossings get no sample of their own (it would be two
-// coincident points); the floor bounds the sampling around them.
+// coincident points); the floor bounds the sampling around them. with_crossing_samples
+// adds one, shared by both branches.
 //
 // Measured (certify_test, EpsilonSampling.OfACircleMeasuresAboutHalfItsEpsilon): the survey's walk admits a step while the distance to the
 // last sample is below epsilon lfs, so the point halfway between two samples is about
@@ -62,6 +63,14 @@ Sample uniform_sampling(const Local_feature_size& lfs, std::size_t n);
 
 // Points at arc-length steps of at most `spacing` (equal steps on each component).
 Sample uniform_sampling_with_spacing(const Local_feature_size& lfs, double spacing);
+
+// `sample` (of lfs.curve(), straight from a sampler) with one more point at each crossing
+// of the curve (Local_feature_size::sharp_points() listed for two branches), shared by both
+// branches: the ground-truth convention for a sampled crossing is that the crossing point
+// joins its neighbours along both branches, so it has degree 4. Without it, the branches
+// pass between samples and their ground-truth edges cross. A crossing already sampled on
+// a branch keeps that sample.
+Sample with_crossing_samples(const Local_feature_size& lfs, Sample sample);
 
 // n points independently uniform in arc length over the whole curve (Seeded_random).
 Sample random_sampling(const Local_feature_size& lfs, std::size_t n, std::uint64_t seed);

@@ -104,6 +104,37 @@ TEST(EpsilonSampling, PutsASampleOnTheCornerAndReportsWhereTheFloorWasHit) {
   }
 }
 
+// The crossing convention: one shared sample per crossing, of degree 4 in the ground truth,
+// where the Lissajous figure's closed form puts 2ab - a - b crossings.
+TEST(CrossingSamples, AddOneSharedPointOfDegreeFourPerCrossing) {
+  for (const auto [a, b] : {std::pair{1, 2}, {2, 3}}) {
+    const Local_feature_size lfs(lissajous_curve(a, b, 1));
+    const Sample plain = safe_epsilon_sampling(lfs, 0.3, default_minimum_lfs(lfs));
+    const Sample crossed = with_crossing_samples(lfs, plain);
+    const std::size_t crossings = static_cast<std::size_t>(lissajous_crossings(a, b));
+    ASSERT_EQ(crossed.size(), plain.size() + crossings);
+    ASSERT_EQ(crossed.edges.size(), plain.edges.size() + 2 * crossings);  // each splits an edge on both branches
+    std::vector<int> degree(crossed.size());
+    for (const Edge& e : crossed.edges) ++degree[e.first], ++degree[e.second];
+    std::size_t fours = 0;
+    for (std::size_t i = 0; i < crossed.size(); ++i) {
+      ASSERT_TRUE(degree[i] == 2 || degree[i] == 4) << i;
+      if (degree[i] != 4) continue;
+      ++fours;
+      EXPECT_EQ(crossed.lfs[i], 0);
+      // On the curve at both of its branches: two parameters of the one component give it.
+      const Curve_component& component = lfs.curve().components[0];
+      EXPECT_LT(distance(crossed.points[i], component.point(crossed.locations[i].parameter)), 1e-9);
+    }
+    EXPECT_EQ(fours, crossings);
+    // Every other point is one of the sampler's, unchanged.
+    for (const Point& p : plain.points) EXPECT_NE(std::find(crossed.points.begin(), crossed.points.end(), p), crossed.points.end());
+  }
+  const Local_feature_size circle_lfs(circle(1));  // no crossing: the sample as it was
+  const Sample circle_sample = safe_epsilon_sampling(circle_lfs, 0.3, default_minimum_lfs(circle_lfs));
+  EXPECT_EQ(with_crossing_samples(circle_lfs, circle_sample).points, circle_sample.points);
+}
+
 TEST(EpsilonSampling, OfAStraightSegmentIsItsEnds) {
   Curve segment{"segment", {}};
   segment.components.emplace_back(
