@@ -10,63 +10,77 @@
 namespace curvebench::bench {
 namespace {
 
+// Names and descriptions the suites' string_views point at, made once.
+std::string_view stored(std::string value) {
+  static std::vector<std::unique_ptr<std::string>> texts;
+  return *texts.emplace_back(std::make_unique<std::string>(std::move(value)));
+}
+
+// `pattern` with "#" replaced by each seed first, first + 1, ...: one replayable name per
+// instance of a generated family.
+std::vector<std::string_view> seeded(std::string_view pattern, std::size_t first, std::size_t count) {
+  std::vector<std::string_view> names;
+  const std::size_t at = pattern.find('#');
+  for (std::size_t seed = first; seed < first + count; ++seed)
+    names.push_back(stored(std::string(pattern.substr(0, at)) + std::to_string(seed) + std::string(pattern.substr(at + 1))));
+  return names;
+}
+
+std::vector<std::string_view> joined(std::initializer_list<std::vector<std::string_view>> parts) {
+  std::vector<std::string_view> all;
+  for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
 // Smooth closed curves with their own ground truth: the SVG Bézier outline that is
 // smooth (simple.svg; blob2.svg and complex.svg have tangent breaks, lfs 0, so they are
 // not) and random Fourier curves, seeds 1, 2, ...: stand-ins for the survey's bunny and
 // classic manifold curves, whose ground truth we cannot redistribute. A name per curve,
 // so each instance replays on its own.
 std::vector<std::string_view> smooth_closed_curves(std::size_t count) {
-  static std::vector<std::unique_ptr<std::string>> names;  // the views below point here
-  while (names.size() + 1 < count) names.push_back(std::make_unique<std::string>("fourier:seed=" + std::to_string(names.size() + 1)));
-  std::vector<std::string_view> curves{"svg:data/svg/simple.svg"};
-  for (std::size_t i = 0; i + 1 < count; ++i) curves.push_back(*names[i]);
-  return curves;
+  return joined({{"svg:data/svg/simple.svg"}, seeded("fourier:seed=#", 1, count - 1)});
 }
 
-// A share of one closed curve per input (the noise experiments) rests on 30 curves in the
-// default suites, so that it carries a Wilson interval a few tens of points wide rather
-// than a coin's, and on 200 in the `full` suite.
+// A share per cell rests on 30 instances in the default suites, so that it carries a
+// Wilson interval a few tens of points wide rather than a coin's, and on 200 in `full`.
 constexpr std::size_t default_instances = 30, full_instances = 200;
 
 // The smooth-curve experiments, on `count` curves each (`suffix` names the size).
 std::vector<Suite> smooth_curve_suites(std::size_t count, std::string_view suffix) {
-  static std::vector<std::unique_ptr<std::string>> texts;  // names and descriptions the views keep
-  const auto text = [](std::string value) -> std::string_view {
-    return *texts.emplace_back(std::make_unique<std::string>(std::move(value)));
-  };
+  const auto name = [&](std::string_view base) { return stored(std::string(base) + std::string(suffix)); };
   const std::string curves = std::to_string(count) + " smooth closed curves";
   const std::vector<std::string_view> inputs = smooth_closed_curves(count);
   return {
-      {.name = text("sampling" + std::string(suffix)),
-       .description = text("Sampling density: " + curves + ", safe epsilon-sampling (survey: Sampling Density)"),
+      {.name = name("sampling"),
+       .description = stored("Sampling density: " + curves + ", safe epsilon-sampling (survey: Sampling Density)"),
        .inputs = inputs,
        .settings = "|epsilon={}",
        .variable = "epsilon",
        .levels = {"0.25", "0.5", "0.75"}},
-      {.name = text("noisy" + std::string(suffix)),
-       .description = text("Uniform noise of extent delta x bounding-box diagonal at epsilon 0.3, " + curves +
-                           " (survey: Uniform Noise)"),
+      {.name = name("noisy"),
+       .description = stored("Uniform noise of extent delta x bounding-box diagonal at epsilon 0.3, " + curves +
+                             " (survey: Uniform Noise)"),
        .inputs = inputs,
        .settings = "|epsilon=0.3|noise={}|seed=1",
        .variable = "delta",
        .levels = {"0", "0.003", "0.01", "0.03"}},
-      {.name = text("lfsnoise" + std::string(suffix)),
-       .description = text("Noise along the normal of delta x lfs at epsilon 0.3, " + curves +
-                           " (survey: LFS-based Noise)"),
+      {.name = name("lfsnoise"),
+       .description = stored("Noise along the normal of delta x lfs at epsilon 0.3, " + curves +
+                             " (survey: LFS-based Noise)"),
        .inputs = inputs,
        .settings = "|epsilon=0.3|lfs-noise={}|seed=1",
        .variable = "delta",
        .levels = {"0", "0.1", "0.33", "0.5"}},
-      {.name = text("sampling-noise" + std::string(suffix)),
-       .description = text("Varying sampling density with lfs noise delta = 1/3, " + curves +
-                           " (survey: Varying Sampling Density + LFS Noise)"),
+      {.name = name("sampling-noise"),
+       .description = stored("Varying sampling density with lfs noise delta = 1/3, " + curves +
+                             " (survey: Varying Sampling Density + LFS Noise)"),
        .inputs = inputs,
        .settings = "|epsilon={}|lfs-noise=0.33|seed=1",
        .variable = "epsilon",
        .levels = {"0.1", "0.2", "0.4"}},
-      {.name = text("outliers" + std::string(suffix)),
-       .description = text("Outliers uniform in the bounding box, percent of the samples, at epsilon 0.3, " + curves +
-                           " (survey: Outliers)"),
+      {.name = name("outliers"),
+       .description = stored("Outliers uniform in the bounding box, percent of the samples, at epsilon 0.3, " + curves +
+                             " (survey: Outliers)"),
        .inputs = inputs,
        .settings = "|epsilon=0.3|outliers={}|seed=1",
        .variable = "percent",
@@ -74,47 +88,95 @@ std::vector<Suite> smooth_curve_suites(std::size_t count, std::string_view suffi
   };
 }
 
+// The generated families with exact ground truth beyond one smooth closed curve, `count`
+// instances per cell: open curves, several components, crossings, sharp and rounded corners.
+std::vector<Suite> family_suites(std::size_t count, std::string_view suffix) {
+  const auto name = [&](std::string_view base) { return stored(std::string(base) + std::string(suffix)); };
+  const std::size_t third = count / 3, half = count / 2;
+  const std::string n = std::to_string(count);
+  return {
+      {.name = name("open-curves"),
+       .description = stored("Open curves, " + n + " per cell: a third smooth closed curves with 10% of their "
+                             "parameter range missing (the survey's samples missing from a boundary), a third "
+                             "half curves (arcs), a third spirals; safe epsilon-sampling (survey: Open Curves)"),
+       .inputs = joined({seeded("fourier:seed=#,gap=0.1|epsilon={}", 1, third),
+                         seeded("fourier:seed=#,gap=0.5|epsilon={}", 1, third),
+                         seeded("spiral:seed=#|epsilon={}", 1, count - 2 * third)}),
+       .variable = "epsilon",
+       .levels = {"0.2", "0.4"}},
+      {.name = name("multiple-curves"),
+       .description = stored("Several components, " + n + " per cell: half a smooth curve with a hole 0.1 inside it "
+                             "(nested), half two curves side by side 0.1 apart; lfs is at most 0.05 where they face "
+                             "each other (survey: Multiple Curves)"),
+       .inputs = joined({seeded("nested:seed=#,separation=0.1|epsilon={}", 1, half),
+                         seeded("fourier:seed=#,components=2,separation=0.1|epsilon={}", 1, count - half)}),
+       .variable = "epsilon",
+       .levels = {"0.2", "0.4"}},
+      {.name = name("intersecting"),
+       .description = stored("Smooth closed curves crossing themselves transversally, " + n + " per cell: Lissajous "
+                             "figures with 1, 2 and 7 crossings, epsilon 0.3 (lfs 0 at a crossing, floored); "
+                             "crossings=1 puts a sample on each crossing, shared by both branches (degree 4 in the "
+                             "ground truth), crossings=0 lets the branches pass between samples (survey: Non-manifold "
+                             "Point Sets, Curves with Self-Intersections)"),
+       .inputs = joined({seeded("lissajous:a=1,b=2,seed=#", 1, third), seeded("lissajous:a=1,b=3,seed=#", 1, third),
+                         seeded("lissajous:a=2,b=3,seed=#", 1, count - 2 * third)}),
+       .settings = "|per-circle=100|crossings={}",
+       .variable = "crossings",
+       .levels = {"0", "1"}},
+      {.name = name("sharp-corners"),
+       .description = stored("Non-convex star polygons with every tip at the given angle, " + n + " per cell, 32 "
+                             "points per unit of circle length at equal steps as the survey's corner family "
+                             "(survey: Sharp Corners)"),
+       .inputs = seeded("star:seed=#,angle={}|per-circle=32", 1, count),
+       .variable = "angle",
+       .levels = {"30", "60", "90"}},
+      {.name = name("rounded-corners"),
+       .description = stored("The stars of sharp-corners with every corner rounded by an arc of radius 0.05: the "
+                             "same turns, smooth (lfs > 0), " + n + " per cell (control for sharp-corners)"),
+       .inputs = seeded("star:seed=#,angle={},rounding=0.05|per-circle=32", 1, count),
+       .variable = "angle",
+       .levels = {"30", "60", "90"}},
+  };
+}
+
 const std::vector<Suite>& table() {
   static const std::vector<Suite> all = [] {
     std::vector<Suite> suites = smooth_curve_suites(default_instances, "");
+    for (Suite& suite : family_suites(default_instances, "")) suites.push_back(std::move(suite));
     for (Suite& suite : smooth_curve_suites(full_instances, "-full")) suites.push_back(std::move(suite));
+    for (Suite& suite : family_suites(full_instances, "-full")) suites.push_back(std::move(suite));
     suites.insert(suites.end(), {
       {.name = "manifold",
-       .description = "Whether the output is a manifold, on the bundled classic point sets and sampled closed curves "
-                      "(survey: Manifold Curves)",
-       .inputs = {"file:data/hnncrust/crocodile-conf.p2d", "file:data/hnncrust/mushroom.p2d",
-                  "file:data/hnncrust/ventilator.p2d", "file:data/stretchdenoise/Circle0.txt",
-                  "file:data/stretchdenoise/Cup0.txt", "file:data/stretchdenoise/Keyboard0.txt",
-                  "file:data/stretchdenoise/Mouse0.txt", "file:data/stretchdenoise/thing.txt",
-                  "file:data/stretchdenoise/vase.txt", "file:data/stretchdenoise/drill.txt",
-                  "svg:data/svg/simple.svg|epsilon=0.4", "svg:data/svg/blob2.svg|epsilon=0.4",
-                  "svg:data/svg/complex.svg|epsilon=0.4", "fourier:seed=1|epsilon=0.4", "fourier:seed=2|epsilon=0.4",
-                  "fourier:seed=3|epsilon=0.4"}},
-      {.name = "sharp-corners",
+       .description = "Whether the output is a manifold, on the bundled classic point sets (no ground truth) and "
+                      "sampled smooth closed curves (survey: Manifold Curves)",
+       .inputs = joined({{"file:data/hnncrust/crocodile-conf.p2d", "file:data/hnncrust/mushroom.p2d",
+                          "file:data/hnncrust/ventilator.p2d", "file:data/stretchdenoise/Circle0.txt",
+                          "file:data/stretchdenoise/Cup0.txt", "file:data/stretchdenoise/Keyboard0.txt",
+                          "file:data/stretchdenoise/Mouse0.txt", "file:data/stretchdenoise/thing.txt",
+                          "file:data/stretchdenoise/vase.txt", "file:data/stretchdenoise/drill.txt",
+                          "svg:data/svg/simple.svg|epsilon=0.4"},
+                         seeded("fourier:seed=#|epsilon=0.4", 1, 19)})},
+      {.name = "corner-family",
        .description = "The survey's sharp-corner family: a unit circle opening to a corner of the given angle, "
                       "10, 16 and 20 points per circle, a sample at the corner (survey: Sharp Corners)",
        .inputs = {"corner:angle={}|per-circle=10", "corner:angle={}|per-circle=16", "corner:angle={}|per-circle=20"},
        .variable = "angle",
        .levels = {"10", "20", "30", "40", "50", "60", "70", "80", "90"}},
-      {.name = "open-curves",
-       .description = "Open curves of the bundled SVG drawings (survey: Open Curves)",
-       .inputs = {"svg:data/svg/Deery.svg|epsilon={}", "svg:data/svg/Fishi.svg|epsilon={}",
-                  "svg:data/svg/Goldi.svg|epsilon={}", "svg:data/svg/Porpi.svg|epsilon={}",
-                  "svg:data/svg/Snail.svg|epsilon={}", "svg:data/svg/Spidy.svg|epsilon={}"},
-       .variable = "epsilon",
-       .levels = {"0.2", "0.4"}},
-      {.name = "multiple-curves",
-       .description = "Several components: multi-curve drawings and glyphs with holes (survey: Multiple Curves)",
-       .inputs = {"svg:data/svg/Frog2.svg|epsilon={}", "svg:data/svg/Croco.svg|epsilon={}", "glyph:B|epsilon={}",
-                  "glyph:g|epsilon={}", "glyph:8|epsilon={}", "glyph:%|epsilon={}", "glyph:@|epsilon={}"},
-       .variable = "epsilon",
-       .levels = {"0.2", "0.4"}},
-      {.name = "intersecting",
-       .description = "Curves that cross themselves (lfs 0 at the crossing, floored) (survey: Curves with "
-                      "Self-Intersections)",
-       .inputs = {"svg:data/svg/f1.svg|epsilon={}", "svg:data/svg/f4.svg|epsilon={}"},
-       .variable = "epsilon",
-       .levels = {"0.2", "0.4"}},
+      {.name = "drawings",
+       .description = "Real drawings, outside every theorem (corners, T-junctions, touching strokes: measured epsilon "
+                      "is infinite): the SVG animals, multi-curve and crossing drawings and DejaVu glyphs, epsilon "
+                      "0.3 (survey: Open Curves, Multiple Curves, Qualitative Comparison)",
+       .inputs = {"svg:data/svg/Deery.svg|epsilon=0.3", "svg:data/svg/Fishi.svg|epsilon=0.3",
+                  "svg:data/svg/Goldi.svg|epsilon=0.3", "svg:data/svg/Porpi.svg|epsilon=0.3",
+                  "svg:data/svg/Snail.svg|epsilon=0.3", "svg:data/svg/Spidy.svg|epsilon=0.3",
+                  "svg:data/svg/Frog2.svg|epsilon=0.3", "svg:data/svg/Croco.svg|epsilon=0.3",
+                  "svg:data/svg/f1.svg|epsilon=0.3", "svg:data/svg/f4.svg|epsilon=0.3",
+                  "svg:data/svg/blob2.svg|epsilon=0.3", "svg:data/svg/complex.svg|epsilon=0.3",
+                  "glyph:B|epsilon=0.3", "glyph:g|epsilon=0.3", "glyph:8|epsilon=0.3", "glyph:%|epsilon=0.3",
+                  "glyph:@|epsilon=0.3", "glyph:a|epsilon=0.3", "glyph:e|epsilon=0.3", "glyph:k|epsilon=0.3",
+                  "glyph:R|epsilon=0.3", "glyph:S|epsilon=0.3", "glyph:Q|epsilon=0.3", "glyph:&|epsilon=0.3",
+                  "glyph:$|epsilon=0.3", "glyph:4|epsilon=0.3", "glyph:w|epsilon=0.3", "glyph:x|epsilon=0.3",
+                  "glyph:y|epsilon=0.3", "glyph:3|epsilon=0.3"}},
       {.name = "qualitative",
        .description = "The bundled point sets of the surveyed authors, without ground truth: topology and pictures "
                       "(survey: Qualitative Comparison)",
@@ -126,44 +188,43 @@ const std::vector<Suite>& table() {
        .description = "Runtime over growing n on one smooth curve (survey: Computational Time)",
        .inputs = {"fourier:seed=7|uniform={}"},
        .variable = "n",
-       .levels = {"1000", "10000", "100000"}},
+       .levels = {"1000", "10000"}},
+      {.name = "runtime-large",
+       .description = "Runtime at n = 100,000 on the curve of `runtime`",
+       .inputs = {"fourier:seed=7|uniform=100000"}},
       {.name = "glyphs",
        .description = "Every glyph of DejaVu Sans, safe epsilon-sampling: the large real-curve set",
        .inputs = {"glyph:*|epsilon={}"},
        .variable = "epsilon",
        .levels = {"0.2", "0.4", "0.6"}},
       {.name = "certify",
-       .description = "Empirical breakdown: exact reconstruction against the measured epsilon (and rho) of smooth "
-                      "curves, from dense to sparser than any theorem covers (survey: Guarantees as Sampling Conditions)",
-       .inputs = {"fourier:seed=1,harmonics=8,amplitude=0.6,decay=1|epsilon={}",
-                  "fourier:seed=2,harmonics=8,amplitude=0.6,decay=1|epsilon={}",
-                  "fourier:seed=3,harmonics=8,amplitude=0.6,decay=1|epsilon={}",
-                  "fourier:seed=4,harmonics=8,amplitude=0.6,decay=1|epsilon={}",
-                  "fourier:seed=5,harmonics=8,amplitude=0.6,decay=1|epsilon={}",
-                  "fourier:seed=6,harmonics=8,amplitude=0.6,decay=1|epsilon={}", "svg:data/svg/simple.svg|epsilon={}",
-                  "svg:data/svg/blob2.svg|epsilon={}", "svg:data/svg/complex.svg|epsilon={}",
-                  "svg:data/svg/spiral.svg|epsilon={}", "glyph:O|epsilon={}", "glyph:o|epsilon={}", "glyph:0|epsilon={}",
-                  "glyph:S|epsilon={}"},
+       .description = "Empirical breakdown: exact reconstruction against the measured epsilon (and rho) of 30 smooth "
+                      "curves with 8 harmonics, from dense to sparser than any theorem covers (survey: Guarantees as "
+                      "Sampling Conditions)",
+       .inputs = seeded("fourier:seed=#,harmonics=8,amplitude=0.6,decay=1|epsilon={}", 1, 30),
        .variable = "epsilon",
-       .levels = {"0.05", "0.1", "0.15", "0.2", "0.25", "0.3", "0.35", "0.4", "0.45", "0.5",
-                  "0.55", "0.6", "0.65", "0.7", "0.75", "0.8", "0.85", "0.9", "0.95", "1"}},
+       .levels = {"0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.8", "1"}},
       {.name = "smoke",
        .description = "Two circles, for tests: a dense and a coarse sampling",
        .inputs = {"circle:r=1|epsilon={}"},
        .variable = "epsilon",
        .levels = {"0.1", "0.6"}},
       {.name = "default",
-       .description = "The main job, well under 5 minutes on 2 cores: every experiment but the glyphs",
-       .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "manifold", "sharp-corners",
-                 "open-curves", "multiple-curves", "intersecting", "qualitative", "runtime", "certify"}},
+       .description = "The main job, under 5 minutes on 2 cores: every experiment but the glyphs, 30 instances a cell",
+       .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "open-curves", "multiple-curves",
+                 "intersecting", "sharp-corners", "rounded-corners", "manifold", "drawings", "qualitative", "runtime",
+                 "certify"}},
       {.name = "all",
-       .description = "Every experiment suite",
-       .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "manifold", "sharp-corners",
-                 "open-curves", "multiple-curves", "intersecting", "qualitative", "runtime", "certify", "glyphs"}},
+       .description = "Every experiment suite at its default size",
+       .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "open-curves", "multiple-curves",
+                 "intersecting", "sharp-corners", "rounded-corners", "manifold", "corner-family", "drawings",
+                 "qualitative", "runtime", "runtime-large", "certify", "glyphs"}},
       {.name = "full",
-       .description = "The smooth-curve experiments on 200 curves per cell, for rates with narrow intervals "
+       .description = "The generated experiments on 200 instances per cell, for rates with narrow intervals "
                       "(under an hour on 2 cores; shard it for more)",
-       .parts = {"sampling-full", "noisy-full", "lfsnoise-full", "sampling-noise-full", "outliers-full"}},
+       .parts = {"sampling-full", "noisy-full", "lfsnoise-full", "sampling-noise-full", "outliers-full",
+                 "open-curves-full", "multiple-curves-full", "intersecting-full", "sharp-corners-full",
+                 "rounded-corners-full"}},
     });
     return suites;
   }();

@@ -15,6 +15,8 @@
 #include <set>
 #include <thread>
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include "algorithms/registry.h"
 #include "bench/runner/bench_input.h"
 #include "bench/runner/evaluation.h"
@@ -195,6 +197,90 @@ TEST(Suites, SmoothCurveCellsHaveTheirCountOfSmoothClosedCurves) {
                    .components.front()
                    .corners()
                    .empty());  // the check above can fail
+}
+
+// Every cell of the main job that yields a rate rests on 30 instances or more; the runtime
+// suite (timing, one curve) and the qualitative one (no ground truth) yield none.
+TEST(Suites, EveryDefaultCellHasThirtyInstances) {
+  for (const std::string_view part : find_suite("default")->parts) {
+    if (part == "runtime" || part == "qualitative") continue;
+    std::map<std::string, std::size_t> per_level;
+    for (const Suite_case& c : suite_cases(*find_suite(part))) ++per_level[c.level];
+    for (const auto& [level, instances] : per_level) EXPECT_GE(instances, 30u) << part << ' ' << level;
+  }
+  for (const std::string_view part : find_suite("full")->parts) {
+    std::map<std::string, std::size_t> per_level;
+    for (const Suite_case& c : suite_cases(*find_suite(part))) ++per_level[c.level];
+    for (const auto& [level, instances] : per_level) EXPECT_GE(instances, 200u) << part << ' ' << level;
+  }
+}
+
+// The generated families hold what their names say, measured on their sampled ground truth
+// with the project's own combinatorics (curve_topology) and exact predicates: each open
+// curve has two ends, each multi-curve input two closed curves (the nested ones nested),
+// each crossing input its stated number of crossings, each star its corners.
+TEST(Suites, GeneratedFamiliesAreWhatTheirNamesSay) {
+  const auto first_level_inputs = [](std::string_view suite_name) {
+    const Suite& suite = *find_suite(suite_name);
+    std::vector<std::vector<Bench_input>> inputs;
+    for (const Suite_case& c : suite_cases(suite))
+      if (c.level == std::string(suite.variable) + "=" + std::string(suite.levels.front()))
+        inputs.push_back(make_bench_inputs(std::vector<std::string>{c.input}));
+    return inputs;
+  };
+  const auto degrees = [](const Bench_input& input) {
+    std::vector<int> degree(input.points.size());
+    for (const Edge& e : *input.truth) ++degree[e.first], ++degree[e.second];
+    return degree;
+  };
+  for (const auto& inputs : first_level_inputs("open-curves")) {
+    const Bench_input& input = inputs.front();
+    const geometry::Curve_topology topology = geometry::curve_topology(input.points.size(), *input.truth);
+    EXPECT_EQ(topology.components, 1u) << input.name;
+    EXPECT_EQ(topology.open_components, 1u) << input.name;
+    EXPECT_EQ(std::ranges::count(degrees(input), 1), 2) << input.name;  // two curve ends
+  }
+  for (const auto& inputs : first_level_inputs("multiple-curves")) {
+    const Bench_input& input = inputs.front();
+    const geometry::Curve_topology topology = geometry::curve_topology(input.points.size(), *input.truth);
+    EXPECT_EQ(topology.closed_components, 2u) << input.name;
+    // The second component inside the first iff the input is nested (exact point location).
+    const geometry::Curve curve = geometry::make_curve(input_source(input.name));
+    const auto inside = [&](const geometry::Curve_component& outer, const Point& p) {
+      const std::vector<Point> polygon = outer.polyline(1e-4);
+      return CGAL::bounded_side_2(polygon.begin(), polygon.end(), p) == CGAL::ON_BOUNDED_SIDE;
+    };
+    EXPECT_EQ(inside(curve.components[0], curve.components[1].point(0)), input.name.starts_with("nested:")) << input.name;
+  }
+  for (const auto& inputs : first_level_inputs("intersecting")) {
+    const Bench_input& input = inputs.front();  // crossings=0: the branches' truth edges cross
+    const int a = input.name[input.name.find("a=") + 2] - '0', b = input.name[input.name.find("b=") + 2] - '0';
+    const auto& edges = *input.truth;
+    int crossing_pairs = 0;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      for (std::size_t j = i + 1; j < edges.size(); ++j) {
+        const auto [p, q] = edges[i];
+        const auto [r, t] = edges[j];
+        if (p == r || p == t || q == r || q == t) continue;
+        crossing_pairs += CGAL::do_intersect(geometry::Kernel::Segment_2(input.points[p], input.points[q]),
+                                             geometry::Kernel::Segment_2(input.points[r], input.points[t]));
+      }
+    EXPECT_EQ(crossing_pairs, 2 * a * b - a - b) << input.name;
+    std::string shared = input.name;  // crossings=1: one point of degree 4 per crossing
+    shared.replace(shared.size() - 1, 1, "1");
+    const Bench_input with_samples = make_bench_inputs(std::vector<std::string>{shared}).front();
+    EXPECT_EQ(std::ranges::count(degrees(with_samples), 4), 2 * a * b - a - b) << shared;
+    EXPECT_EQ(with_samples.points.size(), input.points.size() + static_cast<std::size_t>(2 * a * b - a - b));
+  }
+  for (const char* suite : {"sharp-corners", "rounded-corners"})
+    for (const Suite_case& c : suite_cases(*find_suite(suite))) {
+      const geometry::Curve curve = geometry::make_curve(input_source(c.input));
+      const std::size_t corners = curve.components[0].corners().size();
+      if (std::string_view(suite) == "sharp-corners")
+        EXPECT_EQ(corners, curve.components[0].piece_count()) << c.input;
+      else
+        EXPECT_EQ(corners, 0u) << c.input;
+    }
 }
 
 TEST(ResultsTable, RowsSurviveQuotingAndACutOffLastLine) {
