@@ -155,7 +155,7 @@ const std::vector<Suite>& table() {
                           "file:data/stretchdenoise/Mouse0.txt", "file:data/stretchdenoise/thing.txt",
                           "file:data/stretchdenoise/vase.txt", "file:data/stretchdenoise/drill.txt",
                           "svg:data/svg/simple.svg|epsilon=0.4"},
-                         seeded("fourier:seed=#|epsilon=0.4", 1, 19)})},
+                         seeded("fourier:seed=#|epsilon=0.4", 1, 29)})},
       {.name = "corner-family",
        .description = "The survey's sharp-corner family: a unit circle opening to a corner of the given angle, "
                       "10, 16 and 20 points per circle, a sample at the corner (survey: Sharp Corners)",

@@ -187,6 +187,22 @@ rows = [{'input': str(i), 'level': '', 'algorithm': a, '_exact': ok} for i in ra
         for a, ok in (('A', True), ('B', i < 10), ('C', i != 5))]
 result, best = m.leaders(rows, ['A', 'B', 'C'], '_exact')
 sys.exit(not (best == 'A' and result['B'][1] < 0.05 and result['C'][1] >= 0.05 and result['A'][0][:2] == (20, 20)))"
+# Beside the survey: on open-curves, VICUR (the survey's best) exact on 20 of 20 and X on 8 agrees; X on 20 and
+# VICUR on 8 (McNemar p = 2 / 2^12) differs; X on 19 ties with it, which ranks nothing. On intersecting, a best of 2 of 20 ([2.8–30.1]) holds the survey's 11%.
+check "survey comparison verdicts" /usr/bin/python3 -c "
+import sys; sys.path.insert(0, '$root/bench/report'); import make_report as m
+def run(vicur, other, suite='open-curves'):
+    r = m.Run([])
+    r.rows = [{'suite': suite, 'input': str(i), 'level': '', 'algorithm': a, '_exact': ok, '_ok': True}
+              for i in range(20) for a, ok in (('vicur', i < vicur), ('X', i < other))]
+    r.suites, r.algorithms = [suite], ['vicur', 'X']
+    return r
+row = m.SURVEY_ROWS[[x['suite'] for x in m.SURVEY_ROWS].index('open-curves')]
+crossing = m.SURVEY_ROWS[[x['suite'] for x in m.SURVEY_ROWS].index('intersecting')]
+sys.exit(not (m.survey_ours(run(20, 8), row)[1] and not m.survey_ours(run(8, 20), row)[1]
+              and m.survey_ours(run(20, 19), row)[1] is None
+              and m.survey_ours(run(2, 0, 'intersecting'), crossing)[1]
+              and not m.survey_ours(run(20, 0, 'intersecting'), crossing)[1]))"
 check "Wilson of nothing is empty" /usr/bin/python3 -c "import sys; sys.path.insert(0, '$root/bench/report'); import make_report; sys.exit(make_report.wilson([]) != (0, 0, None, None))"
 
 finish
