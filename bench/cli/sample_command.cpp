@@ -16,7 +16,7 @@ struct Sample_options {
   std::string curve;
   std::optional<double> epsilon, rho;
   std::optional<std::size_t> uniform, random;
-  bool safe = false;
+  bool safe = false, crossing_samples = false;
   std::optional<double> minimum_lfs, uniform_noise, lfs_noise, outliers;
   std::uint64_t seed = 0;
   std::filesystem::path base;
@@ -34,6 +34,7 @@ geometry::Sample draw(const Sample_options& o, const geometry::Local_feature_siz
 void run_sample(const Sample_options& o) {
   const geometry::Local_feature_size lfs(geometry::make_curve(o.curve));
   geometry::Sample sample = draw(o, lfs);
+  if (o.crossing_samples) sample = geometry::with_crossing_samples(lfs, std::move(sample));
   // Independent streams for the noise and the outliers, both derived from --seed.
   if (o.uniform_noise) sample = geometry::with_uniform_noise(std::move(sample), *o.uniform_noise, o.seed + 1);
   if (o.lfs_noise) sample = geometry::with_lfs_noise(lfs, std::move(sample), *o.lfs_noise, o.seed + 2);
@@ -53,7 +54,10 @@ void add_sample_command(CLI::App& app) {
   auto o = std::make_shared<Sample_options>();
   CLI::App* command = app.add_subcommand("sample", "Sample a curve: points, ground-truth edges and lfs");
   command->add_option("--curve", o->curve, "Curve spec: circle:r=1, ellipse:a=2,b=1, superellipse:a=1,b=1,n=4, "
-                                           "fourier:seed=7, corner:angle=30, svg:FILE, glyph:[FONT:]CHAR")
+                                           "fourier:seed=7[,gap=G|,components=K,separation=D], "
+                                           "nested:seed=7,separation=0.1, spiral:seed=7, lissajous:a=1,b=2,seed=7, "
+                                           "corner:angle=30, star:seed=7,angle=60[,rounding=R], svg:FILE, "
+                                           "glyph:[FONT:]CHAR")
       ->required();
   auto* how = command->add_option_group("sampler", "exactly one sampler");
   how->add_option("--epsilon", o->epsilon, "epsilon-sampling by the survey's greedy walk");
@@ -62,6 +66,8 @@ void add_sample_command(CLI::App& app) {
   how->add_option("--random", o->random, "N points uniform in arc length (--seed)");
   how->require_option(1);
   command->add_flag("--safe", o->safe, "with --epsilon: guarantee the measured epsilon stays below E");
+  command->add_flag("--crossing-samples", o->crossing_samples,
+                    "a sample on every crossing, shared by both branches (degree 4 in the ground truth)");
   command->add_option("--min-lfs", o->minimum_lfs, "lfs floor near sharp points (default 1e-3 of the bbox diagonal)");
   command->add_option("--uniform-noise", o->uniform_noise, "add uniform noise of extent DELTA x bbox diagonal");
   command->add_option("--lfs-noise", o->lfs_noise, "add noise along the normal, uniform in [-DELTA, DELTA] x lfs");

@@ -482,11 +482,11 @@ int transversal_crossings(const Curve& curve, int samples) {
 }  // namespace
 
 Curve lissajous_curve(int a, int b, std::uint64_t seed) {
-  if (a < 1 || b <= a || b > 8 || std::gcd(a, b) != 1)
-    throw std::invalid_argument("lissajous: a and b must be coprime with 1 <= a < b <= 8");
+  if (a < 1 || b <= a || b > 5 || std::gcd(a, b) != 1)
+    throw std::invalid_argument("lissajous: a and b must be coprime with 1 <= a < b <= 5");
   const std::string name = "lissajous:a=" + std::to_string(a) + ",b=" + std::to_string(b) + ",seed=" + std::to_string(seed);
   const int crossings = lissajous_crossings(a, b);
-  for (std::uint64_t attempt = 0; attempt < 1000; ++attempt) {
+  for (std::uint64_t attempt = 0; attempt < 200; ++attempt) {
     std::mt19937_64 engine(derived_seed(seed, attempt));
     const double phase = std::numbers::pi * symmetric_unit(engine);
     const double width = 1.25 + 0.25 * symmetric_unit(engine);

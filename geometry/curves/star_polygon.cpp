@@ -103,7 +103,9 @@ std::vector<std::shared_ptr<const Curve_piece>> star_pieces(const std::vector<Po
 
 Curve star_polygon(std::uint64_t seed, double angle, double rounding) {
   if (!(angle > 0 && angle < 150)) throw std::invalid_argument("star: angle must be in (0, 150) degrees");
-  if (!(rounding >= 0) || !std::isfinite(rounding)) throw std::invalid_argument("star: rounding must be finite, >= 0");
+  // A fillet far below the size of the star (1) is a corner in all but name: lfs 1e-300.
+  if (!(rounding == 0 || rounding >= 1e-6) || !std::isfinite(rounding))
+    throw std::invalid_argument("star: rounding must be 0 or in [1e-6, ...), finite");
   std::string name = "star:seed=" + std::to_string(seed) + ",angle=" + format_number(angle);
   if (rounding > 0) name += ",rounding=" + format_number(rounding);
   std::mt19937_64 engine(seed);

@@ -20,8 +20,8 @@ namespace curvebench::geometry {
 // to the centre, so its angle is `angle` (up to rounding). `rounding` > 0 replaces every
 // corner by a tangent circular arc of that radius (the fillets may take at most 90% of a
 // side). One closed component, counterclockwise. Name "star:seed=S,angle=A[,rounding=R]".
-// Throws std::invalid_argument unless 0 < angle < 150 and rounding >= 0, both finite, or if
-// no draw fits the rounding.
+// Throws std::invalid_argument unless 0 < angle < 150 and rounding is 0 or at least 1e-6,
+// both finite, or if no draw fits the rounding.
 Curve star_polygon(std::uint64_t seed, double angle_degrees, double rounding = 0);
 
 }  // namespace curvebench::geometry

@@ -83,6 +83,13 @@ check "outliers are labelled" test "$(grep -c outlier "$work/outliers.labels")" 
 "$curvebench" noise -i "$work/ellipse.xy" --uniform 0.01 --seed 3 -o "$work/noisy1" >/dev/null
 "$curvebench" noise -i "$work/ellipse.xy" --uniform 0.01 --seed 3 -o "$work/noisy2" >/dev/null
 check "same seed, same bytes" cmp -s "$work/noisy1.xy" "$work/noisy2.xy"
+# A figure eight (lissajous 1:2, one crossing) uniformly sampled at 200 points: 200 chain
+# edges; with --crossing-samples one more point, on both branches, so 202 edges.
+"$curvebench" sample --curve lissajous:a=1,b=2,seed=3 --uniform 200 -o "$work/eight" >/dev/null
+"$curvebench" sample --curve lissajous:a=1,b=2,seed=3 --uniform 200 --crossing-samples -o "$work/eight-x" >/dev/null
+check "a figure eight's samples form one chain" test "$(wc -l <"$work/eight.edges")" -eq 200
+check "a sample on the crossing splits an edge of each branch" \
+  test "$(wc -l <"$work/eight-x.xy")" -eq 201 -a "$(wc -l <"$work/eight-x.edges")" -eq 202
 "$curvebench" sample --curve no-such-curve --uniform 5 -o "$work/x" 2>"$work/err"
 check "a bad curve spec is a one-line error" test "$?" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
 

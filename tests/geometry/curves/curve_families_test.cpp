@@ -104,6 +104,7 @@ TEST(Lissajous, CrossesItselfTwoABMinusAMinusBTimes) {
   EXPECT_EQ(lissajous_crossings(2, 3), 7);
   EXPECT_THROW(lissajous_curve(2, 4, 1), std::invalid_argument);  // not coprime: retraces itself
   EXPECT_THROW(lissajous_curve(3, 2, 1), std::invalid_argument);
+  EXPECT_THROW(lissajous_curve(5, 6, 1), std::invalid_argument);  // beyond the crossings a draw keeps apart
 }
 
 TEST(NestedFourierCurves, TheInnerCurveLiesInsideTheOuterAtTheStatedSeparation) {
@@ -177,6 +178,7 @@ TEST(StarPolygon, RoundedIsSmoothWithArcsOfTheRoundingRadius) {
   EXPECT_LT(component.length(), sharp.components[0].length());
   EXPECT_THROW(star_polygon(7, 60, 1), std::invalid_argument);  // fillets longer than the sides
   EXPECT_THROW(star_polygon(7, 150), std::invalid_argument);
+  EXPECT_THROW(star_polygon(7, 60, 1e-300), std::invalid_argument);  // a corner in all but name
 }
 
 TEST(CurveSpec, NamesOfTheGeneratedFamiliesMakeThemAgain) {
