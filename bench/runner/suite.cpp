@@ -35,10 +35,15 @@ std::vector<std::string_view> joined(std::initializer_list<std::vector<std::stri
 // Smooth closed curves with their own ground truth: the SVG Bézier outline that is
 // smooth (simple.svg; blob2.svg and complex.svg have tangent breaks, lfs 0, so they are
 // not) and random Fourier curves, seeds 1, 2, ...: stand-ins for the survey's bunny and
-// classic manifold curves, whose ground truth we cannot redistribute. A name per curve,
-// so each instance replays on its own.
+// classic manifold curves, whose ground truth we cannot redistribute. Their complexity
+// cycles with the seed: blobs of 3 harmonics, the default 5, and wiggly curves of 8
+// slowly decaying ones. A name per curve, so each instance replays on its own.
 std::vector<std::string_view> smooth_closed_curves(std::size_t count) {
-  return joined({{"svg:data/svg/simple.svg"}, seeded("fourier:seed=#", 1, count - 1)});
+  constexpr std::string_view complexities[] = {",harmonics=3", "", ",harmonics=8,amplitude=0.5,decay=1.5"};
+  std::vector<std::string_view> curves{"svg:data/svg/simple.svg"};
+  for (std::size_t seed = 1; seed < count; ++seed)
+    curves.push_back(stored("fourier:seed=" + std::to_string(seed) + std::string(complexities[seed % 3])));
+  return curves;
 }
 
 // A share per cell rests on 30 instances in the default suites, so that it carries a
@@ -48,7 +53,7 @@ constexpr std::size_t default_instances = 30, full_instances = 200;
 // The smooth-curve experiments, on `count` curves each (`suffix` names the size).
 std::vector<Suite> smooth_curve_suites(std::size_t count, std::string_view suffix) {
   const auto name = [&](std::string_view base) { return stored(std::string(base) + std::string(suffix)); };
-  const std::string curves = std::to_string(count) + " smooth closed curves";
+  const std::string curves = std::to_string(count) + " smooth closed curves of three complexities";
   const std::vector<std::string_view> inputs = smooth_closed_curves(count);
   return {
       {.name = name("sampling"),
