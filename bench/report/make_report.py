@@ -11,6 +11,7 @@ import collections
 import csv
 import datetime
 import html
+import json
 import math
 import pathlib
 import re
@@ -585,9 +586,10 @@ SUMMARY_COLUMNS = ("suite level algorithm jobs exact_k exact_n exact_pct exact_l
                    "runtime_ms_mean").split()
 
 
-def write_summary_csv(run, path):
+def write_summary(run, path):
     """One row per suite, level and algorithm: shares with Wilson 95% intervals (in %), means with Student-t 95%
-    intervals; empty where there is nothing to count."""
+    intervals; empty where there is nothing to count. `path` (summary.csv) and, beside it, summary.json: the same
+    cells typed, null for empty (results.json has one row per job; a cell is not a job)."""
     def cells(share):
         k, n, low, high = share
         return [k, n, "" if n == 0 else 100 * k / n, "" if low is None else low, "" if high is None else high]
@@ -596,20 +598,25 @@ def write_summary_csv(run, path):
         mean_, n, low, high = m
         return [n, "" if mean_ is None else mean_, "" if low is None else low, "" if high is None else high]
 
+    table = []
+    for suite in run.suites:
+        rows = run.suite_rows(suite)
+        for level in sorted(ordered(r["level"] for r in rows), key=level_key):
+            for a in run.algorithms:
+                group = [r for r in rows if r["algorithm"] == a and r["level"] == level]
+                if not group:
+                    continue
+                st = group_stats(group)
+                table.append([suite, level, a, st["jobs"]] + cells(st["exact_interval"]) + cells(st["true_topology"])
+                             + means(st["rms_interval"]) + means(st["hausdorff_interval"])
+                             + ["" if st["runtime"] is None else st["runtime"]])
     with open(path, "w", newline="", encoding="utf-8") as f:
         out = csv.writer(f, lineterminator="\n")
         out.writerow(SUMMARY_COLUMNS)
-        for suite in run.suites:
-            rows = run.suite_rows(suite)
-            for level in sorted(ordered(r["level"] for r in rows), key=level_key):
-                for a in run.algorithms:
-                    group = [r for r in rows if r["algorithm"] == a and r["level"] == level]
-                    if not group:
-                        continue
-                    st = group_stats(group)
-                    out.writerow([suite, level, a, st["jobs"]] + cells(st["exact_interval"]) + cells(st["true_topology"])
-                                 + means(st["rms_interval"]) + means(st["hausdorff_interval"])
-                                 + ["" if st["runtime"] is None else st["runtime"]])
+        out.writerows(table)
+    with open(path.with_suffix(".json"), "w", encoding="utf-8") as f:
+        f.write("[\n" + ",\n".join(json.dumps({c: (None if v == "" else v) for c, v in zip(SUMMARY_COLUMNS, row)})
+                                     for row in table) + "\n]\n")
 
 
 def matrix_table(run, key, what):
@@ -809,7 +816,7 @@ def main(argv):
         sys.exit(f"make_report: {csv_path} not found")
     run = Run(read_rows(csv_path))
     charts = make_charts(run, out_dir / "charts")
-    write_summary_csv(run, out_dir / "summary.csv")
+    write_summary(run, out_dir / "summary.csv")
     (out_dir / "report.html").write_text(report_html(run, charts, out_dir, csv_path), encoding="utf-8")
     print(f"make_report: {out_dir / 'report.html'} ({len(run.rows)} jobs, "
           f"{sum(len(c) for c in charts.values())} charts)")

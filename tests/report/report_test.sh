@@ -128,6 +128,12 @@ cell() { grep "^$1,$2,$3," "$summary" | cut -d, -f"$4"; }  # cell SUITE LEVEL AL
 check "EMST at epsilon 0.75: 0 of 2 exact" test "$(cell sampling epsilon=0.75 emst 5-6)" = "0,2"
 check "HNN-Crust at 0.75: its failure counts as not exact" test "$(cell sampling epsilon=0.75 hnn-crust 5-6)" = "1,2"
 check "summary rows: one per cell" test "$(($(wc -l <"$summary") - 1))" -eq $((3 * 4 + 3 * 3 + 5))
+check "summary.json holds the same cells, typed" /usr/bin/python3 -c "
+import csv, json, sys
+rows = list(csv.DictReader(open('$summary')))
+cells = json.load(open('$run/summary.json'))
+emst = next(c for c in cells if (c['suite'], c['level'], c['algorithm']) == ('sampling', 'epsilon=0.75', 'emst'))
+sys.exit(not (len(cells) == len(rows) and emst['exact_k'] == 0 and emst['exact_n'] == 2 and emst['exact_high'] > 60))"
 check "summary table shows exact with its interval" grep -qF "0% [0–66] of 2" "$html"
 check "the first screen is the algorithm x experiment matrix" grep -qF "<h2>Algorithms × experiments</h2>" "$html"
 
