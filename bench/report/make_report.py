@@ -619,10 +619,15 @@ def write_summary(run, path):
                                      for row in table) + "\n]\n")
 
 
+# Timing experiments: one curve per level, so their exact share is no rate; the runtime chart shows them.
+TIMING_SUITES = ("runtime", "runtime-large")
+
+
 def matrix_table(run, key, what):
     """Algorithm x suite: the share of `key` over all levels, with its Wilson interval, as a heat map; the best of
     each suite and those McNemar's test cannot tell from it (p >= 0.05, paired on the same instances) are marked."""
-    suites = [s for s in run.suites if any(r[key] is not None for r in run.suite_rows(s))]
+    suites = [s for s in run.suites
+              if s not in TIMING_SUITES and any(r[key] is not None for r in run.suite_rows(s))]
     if not suites:
         return ""
     columns = {s: leaders(run.suite_rows(s), run.algorithms, key) for s in suites}
