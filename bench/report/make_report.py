@@ -774,6 +774,14 @@ def survey_table(run):
             "sampling theorem.</p>")
 
 
+SUITE_NOTES = {
+    "drawings": "<p class=note>Real drawings (SVG animals, multi-curve and crossing SVGs, glyphs): they have sharp "
+                "corners, T-junctions and touching strokes, so their measured epsilon is infinite and they lie outside "
+                "every sampling theorem. A share here says how an algorithm copes with such input, not whether it "
+                "keeps its guarantee.</p>",
+}
+
+
 def report_html(run, charts, out_dir, csv_path):
     title = f"curvebench report: {out_dir.resolve().name}"
     finished = datetime.datetime.fromtimestamp(csv_path.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
@@ -804,7 +812,7 @@ def report_html(run, charts, out_dir, csv_path):
         for suite in run.suites:
             rows = run.suite_rows(suite)
             parts.append(f'<h2 id="suite-{esc(safe_name(suite))}">Suite {esc(suite or "(unnamed)")}</h2>'
-                         + summary_table(run, suite, rows) + chart_figures(charts[suite])
+                         + SUITE_NOTES.get(suite, "") + summary_table(run, suite, rows) + chart_figures(charts[suite])
                          + "<h3>Reconstructions</h3>" + gallery(rows))
         parts.append('<h2 id="nonok">Non-ok jobs</h2>' + nonok_table(run.rows))
     parts.append('<div id="image-check" data-state="pending">Image check did not run.</div>'

@@ -13,6 +13,11 @@ trap 'rm -rf "$work"' EXIT
 # runtime job, takes about 17 s, and a timeout row would be in the report either way.
 "$curvebench" run default -o "$work/default" -q --timeout 20
 "$root/scripts/check_report.sh" "$work/default" --screenshot "$screenshot"
+# The first screen is the matrix, the survey's findings follow, and the drawings are said to
+# lie outside every theorem.
+for text in "<h2>Algorithms × experiments</h2>" "<h2>Beside the survey</h2>" "outside every sampling theorem"; do
+  grep -qF "$text" "$work/default/report.html" || { echo "default report: no '$text'" >&2; exit 1; }
+done
 # The default pictures (the first failures and jobs of each algorithm and suite) keep the
 # run's output small enough to keep and share.
 megabytes=$(du -s --apparent-size -B1M "$work/default" | cut -f1)
