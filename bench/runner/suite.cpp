@@ -110,13 +110,14 @@ std::vector<Suite> family_suites(std::size_t count, std::string_view suffix) {
        .variable = "epsilon",
        .levels = {"0.2", "0.4"}},
       {.name = name("multiple-curves"),
-       .description = stored("Several components, " + n + " per cell: half a smooth curve with a hole 0.1 inside it "
-                             "(nested), half two curves side by side 0.1 apart; lfs is at most 0.05 where they face "
-                             "each other (survey: Multiple Curves)"),
-       .inputs = joined({seeded("nested:seed=#,separation=0.1|epsilon={}", 1, half),
-                         seeded("fourier:seed=#,components=2,separation=0.1|epsilon={}", 1, count - half)}),
-       .variable = "epsilon",
-       .levels = {"0.2", "0.4"}},
+       .description = stored("Several components at a separation D, " + n + " per cell: half a smooth curve with a "
+                             "hole D inside it (nested), half two curves whose bounding boxes are D apart; 64 points "
+                             "per unit of circle length, so where the components face each other (lfs D / 2) the "
+                             "samples are 0.2 / D lfs apart (survey: Multiple Curves)"),
+       .inputs = joined({seeded("nested:seed=#,separation={}|per-circle=64", 1, half),
+                         seeded("fourier:seed=#,components=2,separation={}|per-circle=64", 1, count - half)}),
+       .variable = "separation",
+       .levels = {"0.1", "0.04", "0.02"}},
       {.name = name("intersecting"),
        .description = stored("Smooth closed curves crossing themselves transversally, " + n + " per cell: Lissajous "
                              "figures with 1, 2 and 7 crossings, epsilon 0.3 (lfs 0 at a crossing, floored); "
