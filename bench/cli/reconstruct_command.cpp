@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algorithms/registry.h"
+#include "bench/runner/external_algorithm.h"
 #include "bench/cli/input.h"
 #include "geometry/io/edge_io.h"
 #include "geometry/io/point_io.h"
@@ -23,7 +24,7 @@ struct Reconstruct_options {
 };
 
 void run_reconstruct(const Reconstruct_options& options) {
-  const algorithms::Algorithm& algorithm = *algorithms::find_algorithm(options.algorithm);
+  const algorithms::Algorithm& algorithm = *bench::find_any_algorithm(options.algorithm);
   const auto values = algorithms::Parameter_values::parse(options.parameters);
   const geometry::PointSet points = load_point_set(options.input);
   const auto start = std::chrono::steady_clock::now();
@@ -56,11 +57,16 @@ void add_reconstruct_command(CLI::App& app) {
   auto options = std::make_shared<Reconstruct_options>();
   CLI::App* command = app.add_subcommand("reconstruct", "Reconstruct a curve from a point file");
   command->add_option("-a,--algorithm", options->algorithm,
-                      "Algorithm name (see `curvebench list`); NAME+outlier-filter drops outliers first")
+                      "Algorithm name (see `curvebench list`); NAME+outlier-filter drops outliers first; "
+                      "exec:COMMAND runs a program, e.g. 'exec:python3 mine.py {points} {edges}'")
       ->required()
       ->check(CLI::Validator(
           [](const std::string& name) {
-            return algorithms::find_algorithm(name) ? std::string() : "no algorithm named " + name;
+            try {
+              return bench::find_any_algorithm(name) ? std::string() : "no algorithm named " + name;
+            } catch (const std::invalid_argument& error) {
+              return std::string(error.what());
+            }
           },
           "ALGORITHM"));
   command->add_option("-p,--parameters", options->parameters,

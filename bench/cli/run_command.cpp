@@ -3,8 +3,12 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
+#include "bench/runner/external_algorithm.h"
 #include "bench/runner/run.h"
 
 namespace curvebench::cli {
@@ -12,6 +16,7 @@ namespace {
 
 struct Run_command_options {
   bench::Run_options run;
+  std::vector<std::string> algorithms;  // as given: NAME,NAME,... or one exec:COMMAND each
   std::string shard, pictures = "some";
   bool no_report = false, quiet = false;
 };
@@ -24,7 +29,23 @@ constexpr const char* pictures_help =
     "Pictures of reconstructions: some (per algorithm and suite, its first 6 failures and its first 2 jobs), all, "
     "failures (every job not exact) or none";
 
+// NAME,NAME,... split at commas, but an exec:COMMAND whole: a command line may hold commas.
+std::vector<std::string> algorithm_names(const std::vector<std::string>& given) {
+  std::vector<std::string> names;
+  for (const std::string& item : given) {
+    if (item.starts_with(bench::external_prefix)) {
+      names.push_back(item);
+      continue;
+    }
+    std::stringstream list(item);
+    for (std::string name; std::getline(list, name, ',');)
+      if (!name.empty()) names.push_back(name);
+  }
+  return names;
+}
+
 void run(Run_command_options& o) {
+  o.run.algorithms = algorithm_names(o.algorithms);
   if (!o.shard.empty()) std::tie(o.run.shard, o.run.shards) = bench::parse_shard(o.shard);
   o.run.pictures = picture_modes.at(o.pictures);
   o.run.report = !o.no_report;
@@ -32,8 +53,10 @@ void run(Run_command_options& o) {
   const bench::Run_summary s = bench::run_suite(o.run);
   std::cerr << "run " << o.run.suite << ": " << s.jobs << " jobs";
   if (s.resumed) std::cerr << " (" << s.resumed << " done before)";
-  std::cerr << "; ran " << s.ok + s.failed + s.crashed + s.timed_out << ": " << s.ok << " ok, " << s.failed
-            << " failed, " << s.crashed << " crashed, " << s.timed_out << " timed out\n";
+  std::cerr << "; ran " << s.ok + s.failed + s.invalid_output + s.crashed + s.timed_out << ": " << s.ok << " ok, "
+            << s.failed << " failed, ";
+  if (s.invalid_output > 0) std::cerr << s.invalid_output << " invalid output, ";
+  std::cerr << s.crashed << " crashed, " << s.timed_out << " timed out\n";
   std::cerr << "results: " << (o.run.output / "results.csv").string();
   if (o.run.report) std::cerr << ", report: " << (o.run.output / "report.html").string();
   std::cerr << '\n';
@@ -47,7 +70,9 @@ void add_run_commands(CLI::App& app) {
   command->add_option("SUITE", o->run.suite, "Suite name (see `curvebench list suites`)")->required();
   command->add_option("-o,--output", o->run.output, "Output directory (results.csv, results.json, pictures, report)")
       ->required();
-  command->add_option("-a,--algorithms", o->run.algorithms, "Algorithms to run (default: all)")->delimiter(',');
+  command->add_option("-a,--algorithms", o->algorithms,
+                      "Algorithms to run (default: all): NAME,NAME,...; repeat -a for each external exec:COMMAND "
+                      "(see `curvebench reconstruct --help`)");
   command->add_option("-j,--jobs", o->run.jobs, "Worker processes (default: one per core)");
   command->add_option("--shard", o->shard, "Run shard K of N (K/N), for job arrays; combine with `curvebench merge`");
   command->add_flag("--resume", o->run.resume, "Continue an interrupted run in the same directory");

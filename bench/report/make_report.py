@@ -24,7 +24,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
 
-STATUS_COLOURS = {"ok": "#4c9a2a", "failed": "#f0a030", "crashed": "#d62728", "timeout": "#7b4ea3"}
+STATUS_COLOURS = {"ok": "#4c9a2a", "failed": "#f0a030", "invalid-output": "#8c564b", "crashed": "#d62728",
+                  "timeout": "#7b4ea3"}
 GALLERY_CAP = 48  # pictures per suite, so that the page stays light
 NOT_DRAWN = "×"  # marks a bar with no value (no ok job with ground truth)
 

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "algorithms/registry.h"
+#include "bench/runner/external_algorithm.h"
 #include "bench/runner/bench_input.h"
 #include "bench/runner/evaluation.h"
 #include "bench/runner/process_pool.h"
@@ -44,7 +45,7 @@ std::vector<const algorithms::Algorithm*> chosen_algorithms(const std::vector<st
   if (names.empty())
     for (const algorithms::Algorithm& algorithm : algorithms::registry()) chosen.push_back(&algorithm);
   for (const std::string& name : names) {
-    const algorithms::Algorithm* algorithm = algorithms::find_algorithm(name);
+    const algorithms::Algorithm* algorithm = find_any_algorithm(name);
     if (!algorithm) throw std::invalid_argument("unknown algorithm '" + name + "' (see `curvebench list`)");
     chosen.push_back(algorithm);
   }
@@ -162,6 +163,12 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
       write_picture(options.output / row[Column::picture], input, points, result.edges, on_input_points, evaluation,
                     job.algorithm->name);
     }
+  } catch (const Invalid_output& error) {
+    row[Column::status] = "invalid-output";
+    row[Column::message] = error.what();
+  } catch (const Program_crashed& error) {
+    row[Column::status] = "crashed";
+    row[Column::message] = error.what();
   } catch (const std::exception& error) {
     row[Column::status] = "failed";
     row[Column::message] = error.what();
@@ -349,7 +356,11 @@ Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<co
     out << row.csv() << '\n' << std::flush;
     rows.push_back(row);
     const std::string& status = row[Column::status];
-    ++(status == "ok" ? summary.ok : status == "failed" ? summary.failed : status == "crashed" ? summary.crashed : summary.timed_out);
+    ++(status == "ok"               ? summary.ok
+       : status == "failed"         ? summary.failed
+       : status == "invalid-output" ? summary.invalid_output
+       : status == "crashed"        ? summary.crashed
+                                    : summary.timed_out);
     progress.job_done(status == "ok");
   };
 

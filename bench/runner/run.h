@@ -47,7 +47,7 @@ struct Run_options {
 struct Run_summary {
   std::size_t jobs = 0;     // in this shard
   std::size_t resumed = 0;  // found done in results.csv
-  std::size_t ok = 0, failed = 0, crashed = 0, timed_out = 0;  // of those run now
+  std::size_t ok = 0, failed = 0, invalid_output = 0, crashed = 0, timed_out = 0;  // of those run now
 };
 
 // Throws std::invalid_argument for an unknown suite or algorithm, bad shard numbers, or an

@@ -77,4 +77,19 @@ ok = abs(e["hausdorff"] - 0.1) < 1e-12 and abs(e["rms"] - math.sqrt((2 * 0.01 - 
 ok = ok and e["exact"] is False and e["manifold"] is True and e["closed_components"] == 1 and e["unconnected"] == 4
 sys.exit(0 if ok else 1)' "$work/eval.json"
 
+# Bring your own algorithm: Crust wrapped as an external program (this very binary, run as
+# `exec:`) scores exactly as the built-in Crust on every job of the sampling suite.
+"$curvebench" run sampling -a crust -j 1 --no-report -q --pictures none -o "$work/builtin"
+"$curvebench" run sampling -a "exec:$curvebench reconstruct -a crust -i {points} -o {edges} -q" -j 1 --no-report -q \
+  --pictures none -o "$work/external"
+check "an external wrapper of crust scores as crust does" "$python" -c '
+import csv, sys
+a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:])
+columns = "status exact rms hausdorff normal_deviation true_topology components".split()
+sys.exit(not (len(a) == len(b) == 90 and all(x[c] == y[c] for x, y in zip(a, b) for c in columns)))' \
+  "$work/builtin/results.csv" "$work/external/results.csv"
+"$curvebench" run smoke -a "exec:no-such-program {points} {edges}" -o "$work/bad" -q 2>"$work/bad.err"
+check "a missing program is a one-line error and no run" \
+  test $? -ne 0 -a "$(wc -l <"$work/bad.err")" -eq 1 -a ! -e "$work/bad/results.csv"
+
 finish
