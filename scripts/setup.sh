@@ -10,11 +10,11 @@ run_packages=(
   libcgal-dev libgmp-dev libmpfr-dev
   libboost-graph-dev
   libfreetype-dev fonts-dejavu-core
-  libtbb-dev libcli11-dev nlohmann-json3-dev
+  libtbb-dev libcli11-dev nlohmann-json3-dev librapidcheck-dev
   python3-matplotlib
 )
 test_packages=(
-  libbenchmark-dev libgtest-dev librapidcheck-dev
+  libbenchmark-dev libgtest-dev
   clang-14 libclang-rt-14-dev
   chromium
 )

@@ -8,6 +8,7 @@
 #include "bench/cli/certify_command.h"
 #include "bench/cli/evaluate_command.h"
 #include "bench/cli/graph_command.h"
+#include "bench/cli/hunt_command.h"
 #include "bench/cli/image_command.h"
 #include "bench/cli/list_command.h"
 #include "bench/cli/measure_command.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   curvebench::cli::add_evaluate_command(app);
   curvebench::cli::add_certify_command(app);
   curvebench::cli::add_ambiguity_command(app);
+  curvebench::cli::add_hunt_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,67 @@
+#include "bench/cli/hunt_command.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include "bench/runner/hunt.h"
+
+namespace curvebench::cli {
+namespace {
+
+struct Hunt_command_options {
+  bench::Hunt_options hunt;
+  bool json = false;
+};
+
+void run_hunt(const Hunt_command_options& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const bench::Hunt_summary summary = bench::hunt(o.hunt);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (o.json) {
+    nlohmann::json findings = nlohmann::json::array();
+    for (const bench::Hunt_finding& f : summary.findings) {
+      nlohmann::json points = nlohmann::json::array();
+      for (const auto& p : f.points) points.push_back({p.x(), p.y()});
+      findings.push_back({{"kind", f.kind},
+                          {"message", f.message},
+                          {"points", points},
+                          {"shrink_steps", f.shrink_steps},
+                          {"replay", f.directory.empty() ? nlohmann::json() : nlohmann::json((f.directory / "replay.sh").string())}});
+    }
+    std::cout << nlohmann::json{{"algorithm", o.hunt.algorithm}, {"seed", o.hunt.seed}, {"cases", summary.cases},
+                                {"seconds", seconds}, {"findings", findings}}
+                     .dump(2)
+              << '\n';
+    return;
+  }
+  std::cout << "hunt " << o.hunt.algorithm << ": " << summary.cases << " cases in " << seconds << " s, "
+            << summary.findings.size() << (summary.findings.size() == 1 ? " finding" : " findings") << '\n';
+  for (const bench::Hunt_finding& f : summary.findings) {
+    std::cout << "  " << f.kind << " on " << f.points.size() << " points (shrunk in " << f.shrink_steps
+              << " steps): " << f.message << '\n';
+    if (!f.directory.empty()) std::cout << "    replay: " << (f.directory / "replay.sh").string() << '\n';
+  }
+}
+
+}  // namespace
+
+void add_hunt_command(CLI::App& app) {
+  auto o = std::make_shared<Hunt_command_options>();
+  CLI::App* command = app.add_subcommand(
+      "hunt", "Search an algorithm (built-in or exec:) for crashes, hangs, invalid output and broken laws, shrunk");
+  command->add_option("-a,--algorithm", o->hunt.algorithm, "Algorithm name or exec:COMMAND")->required();
+  command->add_option("--seconds", o->hunt.seconds, "Search time; shrinking a finding may add up to as much again")
+      ->capture_default_str();
+  command->add_option("--seed", o->hunt.seed, "Seed of the generated inputs")->capture_default_str();
+  command->add_option("--timeout", o->hunt.case_timeout, "Seconds per run of the algorithm before it counts as a hang")
+      ->capture_default_str();
+  command->add_option("--stop-after", o->hunt.stop_after, "Stop after this many findings (0: search all the time)");
+  command->add_option("-o,--output", o->hunt.output, "Write each finding to DIR/KIND-N/ (points.xy, replay.sh)");
+  command->add_flag("--json", o->json, "Print the summary as JSON");
+  command->callback([o] { run_hunt(*o); });
+}
+
+}  // namespace curvebench::cli

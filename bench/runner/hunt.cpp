@@ -1,0 +1,360 @@
+#include "bench/runner/hunt.h"
+
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "algorithms/registry.h"
+#include "bench/runner/external_algorithm.h"
+#include "bench/runner/process_pool.h"
+
+namespace curvebench::bench {
+namespace {
+
+using algorithms::Edge;
+using geometry::Point;
+using Clock = std::chrono::steady_clock;
+
+// ---- Inputs -----------------------------------------------------------------------------
+
+// 0, 1, -1, 2, -2, ...: a lattice coordinate that shrinks towards 0.
+int zigzag(int k) { return k % 2 ? (k + 1) / 2 : -k / 2; }
+
+// Scales that reach the huge, the tiny (subnormal) and the largest doubles; 0 first, so
+// that a finding shrinks to plain integers.
+const std::vector<int> exponents{0, 1, -1, 30, -30, 600, -600, 1000, -1000, 1019, -1070};
+
+using Lattice = std::vector<std::pair<int, int>>;
+
+// The degenerate families of the fuzz decoder, on the integer lattice: any points, points
+// on one line, on one circle (the 12 lattice points of x^2 + y^2 = 25), on a 4 x 4 grid, and
+// crowded in a 3 x 3 square (duplicates); and points on a fine lattice, in general position
+// but for a rare draw. Each shrinks within its family.
+rc::Gen<Lattice> lattice_sets() {
+  const auto coordinate = rc::gen::map(rc::gen::inRange(0, 17), zigzag);
+  const auto small = rc::gen::map(rc::gen::inRange(0, 7), zigzag);
+  const auto any = rc::gen::container<Lattice>(rc::gen::pair(coordinate, coordinate));
+  const auto line = rc::gen::map(
+      rc::gen::tuple(rc::gen::pair(small, small), rc::gen::pair(small, small), rc::gen::container<std::vector<int>>(small)),
+      [](const std::tuple<std::pair<int, int>, std::pair<int, int>, std::vector<int>>& drawn) {
+        const auto& [origin, step, ks] = drawn;
+        Lattice points;
+        for (const int k : ks) points.emplace_back(origin.first + k * step.first, origin.second + k * step.second);
+        return points;
+      });
+  static const Lattice circle{{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  const auto on_circle = rc::gen::map(rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 12)), [](const std::vector<int>& ks) {
+    Lattice points;
+    for (const int k : ks) points.push_back(circle[k]);
+    return points;
+  });
+  const auto grid = rc::gen::container<Lattice>(rc::gen::pair(rc::gen::inRange(0, 4), rc::gen::inRange(0, 4)));
+  const auto crowded = rc::gen::container<Lattice>(rc::gen::pair(rc::gen::inRange(0, 3), rc::gen::inRange(0, 3)));
+  // Fine coordinates: almost always in general position, where the laws are checked.
+  const auto generic = rc::gen::container<Lattice>(rc::gen::pair(rc::gen::inRange(0, 1 << 20), rc::gen::inRange(0, 1 << 20)));
+  return rc::gen::oneOf(any, line, on_circle, grid, crowded, generic, generic);
+}
+
+rc::Gen<std::vector<Point>> point_sets() {
+  return rc::gen::map(
+      rc::gen::tuple(lattice_sets(),
+                     rc::gen::map(rc::gen::inRange(0, int(exponents.size())), [](int k) { return exponents[k]; }),
+                     rc::gen::inRange(0, 4)),
+      [](const std::tuple<std::vector<std::pair<int, int>>, int, int>& drawn) {
+        const auto& [lattice, exponent, nudge] = drawn;
+        std::vector<Point> points;
+        for (const auto& [x, y] : lattice) points.emplace_back(std::ldexp(double(x), exponent), std::ldexp(double(y), exponent));
+        if (nudge > 0 && !points.empty()) {  // one coordinate one ulp up: near-degenerate
+          Point& p = points[std::size_t(nudge - 1) % points.size()];
+          p = Point(std::nextafter(p.x(), HUGE_VAL), p.y());
+        }
+        return points;
+      });
+}
+
+// ---- One run of the algorithm, in a worker process ------------------------------------
+
+// What a run gave: edges (between input points unless `moved` is set), a clear error, or
+// a defect.
+struct Outcome {
+  enum class Kind { edges, error, invalid, crash, hang } kind = Kind::edges;
+  std::string message;
+  std::vector<Edge> edges;
+  std::vector<Point> moved;
+};
+
+std::string run_in_worker(const algorithms::Algorithm& algorithm, std::span<const Point> points) {
+  std::ostringstream out;
+  out.precision(17);
+  try {
+    const algorithms::Reconstruction result = algorithms::reconstruct(algorithm, points);
+    const std::size_t count = result.points.empty() ? points.size() : result.points.size();
+    for (std::size_t e = 0; e < result.edges.size(); ++e) {
+      const auto [i, j] = result.edges[e];
+      if (!(i < j && j < count) || (e > 0 && !(result.edges[e - 1] < result.edges[e])))
+        return "invalid\nedge " + std::to_string(i) + " " + std::to_string(j) + " of " + std::to_string(count) +
+               " points: out of range, a self-loop, unsorted or repeated";
+    }
+    out << "edges\n" << result.points.size() << '\n';
+    for (const Point& p : result.points) out << p.x() << ' ' << p.y() << '\n';
+    for (const auto& [i, j] : result.edges) out << i << ' ' << j << '\n';
+  } catch (const Invalid_output& error) {
+    return std::string("invalid\n") + error.what();
+  } catch (const Program_crashed& error) {
+    return std::string("crash\n") + error.what();
+  } catch (const std::exception& error) {
+    return std::string("error\n") + error.what();
+  }
+  return out.str();
+}
+
+Outcome parse_outcome(const std::string& text) {
+  std::istringstream in(text);
+  std::string kind;
+  std::getline(in, kind);
+  Outcome outcome;
+  if (kind != "edges") {
+    outcome.kind = kind == "invalid" ? Outcome::Kind::invalid : kind == "crash" ? Outcome::Kind::crash : Outcome::Kind::error;
+    std::getline(in, outcome.message);
+    return outcome;
+  }
+  std::size_t moved = 0;
+  in >> moved;
+  for (std::size_t k = 0; k < moved; ++k) {
+    double x = 0, y = 0;
+    in >> x >> y;
+    outcome.moved.emplace_back(x, y);
+  }
+  for (std::size_t i, j; in >> i >> j;) outcome.edges.emplace_back(i, j);
+  return outcome;
+}
+
+// Runs the algorithm on each input in a worker process of its own, one after another.
+std::vector<Outcome> run_each(const algorithms::Algorithm& algorithm, const std::vector<std::vector<Point>>& inputs,
+                              double timeout) {
+  std::vector<Outcome> outcomes(inputs.size());
+  run_in_processes(
+      inputs.size(), {.workers = 1, .timeout_seconds = timeout, .memory_limit_bytes = 8ull << 30},
+      [&](std::size_t i) { return run_in_worker(algorithm, inputs[i]); },
+      [&](std::size_t i, const Task_outcome& task) {
+        if (task.kind == Task_outcome::Kind::finished) {
+          outcomes[i] = parse_outcome(task.output);
+        } else {
+          outcomes[i].kind = task.kind == Task_outcome::Kind::timed_out ? Outcome::Kind::hang : Outcome::Kind::crash;
+          outcomes[i].message = task.reason;
+        }
+      });
+  return outcomes;
+}
+
+// ---- Checks -------------------------------------------------------------------------------
+
+// No two points equal, no three collinear, no four cocircular, no two distances equal
+// (exact predicates): where the output is the geometry's alone. On degenerate input an
+// algorithm breaks ties, by index or by orientation, and the laws need not hold.
+// Inputs above 16 points are not checked (the test is O(n^4), and exact at 2^±1000): a law's
+// finding shrinks below that anyway.
+bool general_position(const std::vector<Point>& p) {
+  const std::size_t n = p.size();
+  if (n > 16) return false;
+  const auto compare_distance = geometry::Kernel().compare_distance_2_object();
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (p[i] == p[j]) return false;
+      pairs.emplace_back(i, j);
+      for (std::size_t k = j + 1; k < n; ++k) {
+        if (CGAL::collinear(p[i], p[j], p[k])) return false;
+        for (std::size_t l = k + 1; l < n; ++l)
+          if (CGAL::side_of_bounded_circle(p[i], p[j], p[k], p[l]) == CGAL::ON_BOUNDARY) return false;
+      }
+    }
+  for (std::size_t a = 0; a < pairs.size(); ++a)
+    for (std::size_t b = a + 1; b < pairs.size(); ++b)
+      if (compare_distance(p[pairs[a].first], p[pairs[a].second], p[pairs[b].first], p[pairs[b].second]) == CGAL::EQUAL)
+        return false;
+  return true;
+}
+
+struct Defect {
+  std::string kind, message;
+  std::vector<Point> variant;  // the transformed input a law compared against, if any
+};
+
+// Each point's first exact duplicate, so that edge sets compare whichever copy got the edges.
+std::vector<std::size_t> representatives(const std::vector<Point>& points) {
+  std::map<std::pair<double, double>, std::size_t> first;
+  std::vector<std::size_t> result;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    result.push_back(first.emplace(std::pair(points[i].x(), points[i].y()), i).first->second);
+  return result;
+}
+
+// The edges as pairs of original points' representatives; variant index k is original
+// point original_of[k].
+std::vector<Edge> in_original_terms(const std::vector<Edge>& edges, const std::vector<std::size_t>& original_of,
+                                    const std::vector<std::size_t>& representative) {
+  std::vector<Edge> result;
+  for (const auto& [i, j] : edges) {
+    const std::size_t a = representative[original_of[i]], b = representative[original_of[j]];
+    if (a != b) result.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  std::ranges::sort(result);
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
+std::string describe(const std::vector<Edge>& edges) {
+  std::string text;
+  for (const auto& [i, j] : edges) {
+    if (!text.empty()) text.push_back(' ');
+    text.append(std::to_string(i)).append("-").append(std::to_string(j));
+  }
+  return text.empty() ? "(none)" : text;
+}
+
+std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const std::vector<Point>& points,
+                                  double timeout) {
+  const std::size_t n = points.size();
+  std::vector<std::vector<Point>> inputs{points, points};
+  std::vector<std::size_t> rotated(n), identity(n);  // the variant's point k is the input's rotated[k]
+  for (std::size_t i = 0; i < n; ++i) identity[i] = i, rotated[i] = (i + 1) % n;
+  std::vector<Point> permuted, doubled, mirrored;
+  bool doubles_exactly = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    permuted.push_back(points[rotated[i]]);
+    doubled.emplace_back(2 * points[i].x(), 2 * points[i].y());
+    mirrored.emplace_back(-points[i].x(), points[i].y());
+    doubles_exactly = doubles_exactly && std::isfinite(doubled.back().x()) && std::isfinite(doubled.back().y());
+  }
+  inputs.insert(inputs.end(), {permuted, mirrored});
+  if (doubles_exactly) inputs.push_back(doubled);
+  // The input alone first: most findings show there, and a clear error ends the case.
+  std::vector<Outcome> outcomes = run_each(algorithm, {points}, timeout);
+  if (outcomes[0].kind == Outcome::Kind::edges) {
+    const std::vector<Outcome> rest = run_each(algorithm, {inputs.begin() + 1, inputs.end()}, timeout);
+    outcomes.insert(outcomes.end(), rest.begin(), rest.end());
+  }
+
+  constexpr const char* names[] = {"input", "input, second run", "input rotated", "input mirrored", "input doubled"};
+  for (std::size_t k = 0; k < outcomes.size(); ++k) {
+    const Outcome& o = outcomes[k];
+    const std::string where = std::string(" (") + names[k] + ")";
+    const std::vector<Point> variant = k < 2 ? std::vector<Point>{} : inputs[k];
+    if (o.kind == Outcome::Kind::crash) return Defect{"crash", o.message + where, variant};
+    if (o.kind == Outcome::Kind::hang) return Defect{"hang", o.message + where, variant};
+    if (o.kind == Outcome::Kind::invalid) return Defect{"invalid-output", o.message + where, variant};
+  }
+  const Outcome& first = outcomes[0];
+  if (outcomes.size() < 2 || first.kind != Outcome::Kind::edges || outcomes[1].kind != Outcome::Kind::edges)
+    return std::nullopt;
+  if (first.edges != outcomes[1].edges || first.moved.size() != outcomes[1].moved.size() ||
+      !std::equal(first.moved.begin(), first.moved.end(), outcomes[1].moved.begin()))
+    return Defect{"not-deterministic", "two runs on the same input differ: " + describe(first.edges) + " / " +
+                                           describe(outcomes[1].edges), {}};
+  if (!algorithm.repeatable || !first.moved.empty() || !general_position(points)) return std::nullopt;
+  const std::vector<std::size_t> representative = representatives(points);
+  const std::vector<Edge> expected = in_original_terms(first.edges, identity, representative);
+  const std::pair<const char*, const std::vector<std::size_t>*> laws[] = {
+      {"not-permutation-invariant", &rotated}, {"not-reflection-invariant", &identity}, {"not-scale-invariant", &identity}};
+  for (std::size_t k = 2; k < outcomes.size(); ++k) {
+    const Outcome& o = outcomes[k];
+    if (o.kind != Outcome::Kind::edges || !o.moved.empty()) continue;  // a clear error on a variant is not a law broken
+    const std::vector<Edge> seen = in_original_terms(o.edges, *laws[k - 2].second, representative);
+    if (seen != expected)
+      return Defect{laws[k - 2].first,
+                    std::string("edges on the input: ") + describe(expected) + "; on the " + (names[k] + 6) +
+                        " input, in the input's indices: " + describe(seen),
+                    inputs[k]};
+  }
+  return std::nullopt;
+}
+
+// ---- Findings -------------------------------------------------------------------------------
+
+void write_points(const std::filesystem::path& file, const std::vector<Point>& points) {
+  std::ofstream out(file);
+  char line[80];
+  for (const Point& p : points) {
+    std::snprintf(line, sizeof line, "%.17g %.17g\n", p.x(), p.y());
+    out << line;
+  }
+}
+
+std::string shell_quoted(const std::string& text) {
+  std::string quoted = "'";
+  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+void write_finding(Hunt_finding& finding, const Defect& defect, const Hunt_options& options, std::size_t number) {
+  finding.directory = options.output / (finding.kind + "-" + std::to_string(number));
+  std::filesystem::create_directories(finding.directory);
+  write_points(finding.directory / "points.xy", finding.points);
+  if (!defect.variant.empty()) write_points(finding.directory / "variant.xy", defect.variant);
+  std::error_code ignored;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ignored);
+  std::ofstream replay(finding.directory / "replay.sh");
+  replay << "#!/bin/sh\n# " << finding.kind << ": " << finding.message << "\n# found by curvebench hunt -a "
+         << shell_quoted(options.algorithm) << " --seed " << options.seed << ", shrunk in " << finding.shrink_steps
+         << " steps to " << finding.points.size() << " points\ncd \"$(dirname \"$0\")\"\n"
+         << shell_quoted(self.string()) << " reconstruct -a " << shell_quoted(options.algorithm)
+         << " -i points.xy -o edges.txt && cat edges.txt\n";
+  if (!defect.variant.empty())
+    replay << "echo 'on variant.xy (the same points transformed):'\n"
+           << shell_quoted(self.string()) << " reconstruct -a " << shell_quoted(options.algorithm)
+           << " -i variant.xy -o variant-edges.txt && cat variant-edges.txt\n";
+  replay.close();
+  std::filesystem::permissions(finding.directory / "replay.sh", std::filesystem::perms::owner_exec,
+                               std::filesystem::perm_options::add);
+}
+
+}  // namespace
+
+Hunt_summary hunt(const Hunt_options& options) {
+  const algorithms::Algorithm* algorithm = find_any_algorithm(options.algorithm);
+  if (!algorithm) throw std::invalid_argument("unknown algorithm '" + options.algorithm + "' (see `curvebench list`)");
+  const auto start = Clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  Hunt_summary summary;
+  std::map<std::string, std::size_t> found;  // per kind
+  const rc::Gen<std::vector<Point>> generator = point_sets();
+  for (std::uint64_t i = 0; elapsed() < options.seconds; ++i) {
+    if (options.stop_after > 0 && summary.findings.size() >= options.stop_after) break;
+    const rc::Shrinkable<std::vector<Point>> drawn = generator(rc::Random(options.seed * 0x9E3779B97F4A7C15ULL + i),
+                                                                5 + int(i * 7 % 60));
+    ++summary.cases;
+    std::optional<Defect> defect = find_defect(*algorithm, drawn.value(), options.case_timeout);
+    if (!defect || found[defect->kind] >= options.max_findings) continue;
+    // Greedy shrinking: the first shrink that shows the same defect, until none does.
+    rc::Shrinkable<std::vector<Point>> current = drawn;
+    std::size_t steps = 0;
+    for (bool progress = true; progress && elapsed() < 2 * options.seconds + 30;) {
+      progress = false;
+      rc::Seq<rc::Shrinkable<std::vector<Point>>> shrinks = current.shrinks();
+      while (rc::Maybe<rc::Shrinkable<std::vector<Point>>> next = shrinks.next()) {
+        std::optional<Defect> again = find_defect(*algorithm, next->value(), options.case_timeout);
+        if (again && again->kind == defect->kind) {
+          current = *next, defect = std::move(again), ++steps, progress = true;
+          break;
+        }
+      }
+    }
+    Hunt_finding finding{defect->kind, defect->message, current.value(), steps, {}};
+    const std::size_t number = ++found[defect->kind];
+    if (!options.output.empty()) write_finding(finding, *defect, options, number);
+    summary.findings.push_back(std::move(finding));
+  }
+  return summary;
+}
+
+}  // namespace curvebench::bench

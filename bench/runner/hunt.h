@@ -1,0 +1,62 @@
+// `curvebench hunt`: a black-box, property-based search for defects of one algorithm,
+// built-in or external (exec:), with RapidCheck's generators and shrinking.
+//
+// Inputs: small point sets (0 to about 12 points) on an integer lattice, from five families:
+// any points, collinear runs, cocircular points, grid points and crowded points
+// (duplicates); scaled by a power of two that reaches 2^±1000 and the limits of double,
+// and with one coordinate moved by one ulp or none. Defects, each checked in a worker process of its own (a crash or a hang
+// costs only its case):
+//   crash           the algorithm (or program) was killed by a signal
+//   hang            it ran past the case timeout
+//   invalid-output  edges out of range, self-loops, unsorted or repeated (built-in), or
+//                   what exec: reads as invalid
+//   not-deterministic, not-permutation-invariant, not-scale-invariant,
+//   not-reflection-invariant
+//                   the edges (between input points, duplicates identified) differ between
+//                   two runs, or after rotating the input's order by one, doubling every
+//                   coordinate or negating every x; the three laws are checked for
+//                   repeatable algorithms that keep the input points, on input in general
+//                   position (no duplicate, three collinear, four cocircular or two equal
+//                   distances: there an algorithm breaks ties as it may)
+// A clear error (an exception, a non-zero exit with a message) is not a defect. Each finding
+// is shrunk greedily through RapidCheck's shrinks (fewer points, then smaller coordinates
+// and scale) while it shows the same defect, and written to DIR/KIND-N/ as points.xy, the
+// defect's description and replay.sh.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geometry/kernel.h"
+
+namespace curvebench::bench {
+
+struct Hunt_options {
+  std::string algorithm;         // a registered name or exec:COMMAND
+  double seconds = 60;           // search time, shrinking included
+  std::uint64_t seed = 0;
+  std::filesystem::path output;  // findings' directories; empty: none written
+  double case_timeout = 10;      // seconds per run of the algorithm
+  std::size_t max_findings = 1;  // per defect kind
+  std::size_t stop_after = 0;    // stop the search after this many findings; 0: search for `seconds`
+};
+
+struct Hunt_finding {
+  std::string kind;     // crash, hang, invalid-output, not-...
+  std::string message;  // what was seen
+  std::vector<geometry::Point> points;  // the shrunk input
+  std::size_t shrink_steps = 0;
+  std::filesystem::path directory;      // where it was written, if it was
+};
+
+struct Hunt_summary {
+  std::size_t cases = 0;  // inputs tried, shrinking not counted
+  std::vector<Hunt_finding> findings;
+};
+
+// Throws std::invalid_argument for an unknown algorithm or a bad exec: declaration.
+Hunt_summary hunt(const Hunt_options& options);
+
+}  // namespace curvebench::bench
