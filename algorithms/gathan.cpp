@@ -176,6 +176,16 @@ bool candidate(const graphs::Delaunay_triangulation& dt, Vertex v, Vertex w, con
   return gathan_rules::dual_edge_along_normal(p, q, normal_line(dt, v, pole), cos2);
 }
 
+CGAL::Comparison_result compare_length(const Point& p, const Point& q, const Point& r, const Point& s) {
+  return geometry::Kernel().compare_distance_2_object()(p, q, r, s);
+}
+
+// An edge's end points, the lexicographically smaller first, as a comparable tuple.
+std::array<double, 4> lexicographic_ends(const gathan_rules::Edge_with_apexes& e) {
+  const Point &a = std::min(e.p, e.q), &b = std::max(e.p, e.q);
+  return {a.x(), a.y(), b.x(), b.y()};
+}
+
 gathan_rules::Edge_with_apexes with_apexes(const graphs::Delaunay_triangulation& dt, const graphs::Delaunay_edge& e) {
   return {dt.point(e.source), dt.point(e.target), e.left == no_vertex ? nullptr : &dt.point(e.left),
           e.right == no_vertex ? nullptr : &dt.point(e.right)};
@@ -263,8 +273,13 @@ std::vector<Edge> gathan_reconstruction(std::span<const Point> points, double th
     const auto ea = with_apexes(dt, edges[a.second]), eb = with_apexes(dt, edges[b.second]);
     if (gathan_rules::larger_dual_ratio(ea, eb)) return true;
     if (gathan_rules::larger_dual_ratio(eb, ea)) return false;
-    return std::pair(edges[a.second].source, edges[a.second].target) <
-           std::pair(edges[b.second].source, edges[b.second].target);
+    // Equal ratios (every hull edge's is infinite): the shorter edge first, then the edge
+    // of the lexicographically smaller end points. Geometry alone decides, so that the
+    // input's order cannot (`curvebench hunt` found the index tie-break reordering four
+    // points in convex position).
+    const auto length_order = compare_length(ea.p, ea.q, eb.p, eb.q);
+    if (length_order != CGAL::EQUAL) return length_order == CGAL::SMALLER;
+    return lexicographic_ends(ea) < lexicographic_ends(eb);
   });
   for (const auto& entry : pool) {  // not std::views::values: clang 14 cannot read libstdc++ 12's views
     const std::uint32_t i = entry.second;

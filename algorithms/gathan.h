@@ -34,8 +34,9 @@
 //     itself (dual_longer_than_edge: a curve edge's dual runs from the inner to the outer
 //     medial axis; a coarse polygon's sides are hull edges, with infinite duals). Within
 //     each tier, decreasing |dual Voronoi edge| / |edge| (= (cot A + cot B) / 2 for the
-//     angles A, B at the two apexes, infinite on the hull; larger_dual_ratio; ties by
-//     index); an edge is added while both its ends have degree < 2.
+//     angles A, B at the two apexes, infinite on the hull; larger_dual_ratio; ties to the
+//     shorter edge, then to the lexicographically smaller ends, never to the input's
+//     order); an edge is added while both its ends have degree < 2.
 // Every vertex ends with degree <= 2. Fewer than 2 points give no edge; collinear input
 // (a Delaunay triangulation of dimension 1) gives the chain of consecutive points.
 //

@@ -1,7 +1,9 @@
 #include "algorithms/gathang.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <numbers>
 
 #include "algorithms/gathan.h"
@@ -81,9 +83,19 @@ std::vector<Edge> gathang_reconstruction(std::span<const Point> points, double a
     for (const Vertex w : proposed[v])
       if (w != no_vertex && v < w && (proposed[w][0] == v || proposed[w][1] == v)) graph.add(v, w);
 
-  // C.
+  // C, corner candidates nearest-neighbour distance first: each step changes the graph the
+  // next one reads, so an order by index made the output depend on the input's order, and
+  // one by position on its orientation (`curvebench hunt`). Ties (degenerate input): the
+  // lexicographically smaller point first.
   const double cos_alpha = std::cos(alpha_degrees * std::numbers::pi / 180);
-  for (Vertex c = 0; c < n; ++c) {
+  std::vector<Vertex> by_spacing(n);
+  std::iota(by_spacing.begin(), by_spacing.end(), Vertex{0});
+  const auto compare_distance = geometry::Kernel().compare_distance_2_object();
+  std::sort(by_spacing.begin(), by_spacing.end(), [&](Vertex v, Vertex w) {
+    const auto order = compare_distance(dt.point(v), dt.point(proposed[v][0]), dt.point(w), dt.point(proposed[w][0]));
+    return order != CGAL::EQUAL ? order == CGAL::SMALLER : dt.point(v) < dt.point(w);
+  });
+  for (const Vertex c : by_spacing) {
     if (proposed[c][1] != no_vertex || graph.degree(c) >= 2) continue;
     const Vertex a = proposed[c][0];
     const Vertex b = nearest_neighbor_where(dt, c, [&](Vertex w) {

@@ -29,7 +29,9 @@
 //     (x - p).(n(p) - p) <= 0 (angle n(p) p x at least 90 degrees), if any. Distances are
 //     compared exactly, ties to the smaller index (graphs/proximity_predicates.h, closer).
 //     Edge pq is kept if q in {n(p), h(p)} and p in {n(q), h(q)}.
-//  C  corners, in increasing index order. A sample c with no h(c) and degree < 2 is a
+//  C  corners, nearest-neighbour distance |c n(c)| first (ties: the lexicographically
+//     smaller sample; never the input's order).
+//     A sample c with no h(c) and degree < 2 is a
 //     corner: all its Delaunay neighbours lie within 90 degrees of n(c) (a sharp corner, an
 //     end of an open curve, or a vertex of an acute triangle). Let b(c) be its nearest
 //     Delaunay neighbour x with angle n(c) c x >= alpha (gathan_rules::angle_at_least).
