@@ -34,14 +34,21 @@ std::vector<Edge> chain(std::size_t first, std::size_t count) {
   return edges;
 }
 
-// True if the points' extent, or a squared difference, overflows: then refusing is right.
+// True if the points' extent (their bounding box's squared diagonal, which the metrics
+// check) or a squared difference overflows: then refusing is right. The box's diagonal can
+// overflow while every pair of points squares to a finite distance (a campaign found
+// points at 1e154 spread along both axes), and the metrics refuse those too.
 bool overflows(const std::vector<Point>& points) {
-  for (const Point& a : points)
+  double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+  for (const Point& a : points) {
+    xmin = std::min(xmin, a.x()), xmax = std::max(xmax, a.x()), ymin = std::min(ymin, a.y()), ymax = std::max(ymax, a.y());
     for (const Point& b : points) {
       const double dx = a.x() - b.x(), dy = a.y() - b.y();
       if (!std::isfinite(dx * dx + dy * dy)) return true;
     }
-  return false;
+  }
+  const double width = xmax - xmin, height = ymax - ymin;
+  return !points.empty() && !std::isfinite(width * width + height * height);
 }
 
 void check_metrics(const std::vector<Point>& points, std::size_t split) {
