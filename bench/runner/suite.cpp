@@ -120,7 +120,8 @@ std::vector<Suite> family_suites(std::size_t count, std::string_view suffix) {
        .levels = {"0.1", "0.04", "0.02"}},
       {.name = name("intersecting"),
        .description = stored("Smooth closed curves crossing themselves transversally, " + n + " per cell: Lissajous "
-                             "figures with 1, 2 and 7 crossings, epsilon 0.3 (lfs 0 at a crossing, floored); "
+                             "figures with 1, 2 and 7 crossings, 100 points per unit of circle length at equal "
+                             "steps (lfs is 0 at a crossing, so no epsilon-sampling reaches it); "
                              "crossings=1 puts a sample on each crossing, shared by both branches (degree 4 in the "
                              "ground truth), crossings=0 lets the branches pass between samples (survey: Non-manifold "
                              "Point Sets, Curves with Self-Intersections)"),
