@@ -204,7 +204,13 @@ Edges brute_force_gathang(const std::vector<Point>& points, double alpha_degrees
     for (const std::size_t w : {nn[v], hn[v]})
       if (w < n && v < w && (nn[w] == v || hn[w] == v)) add(v, w);
   const Q cos_alpha(std::cos(alpha_degrees * std::numbers::pi / 180));
-  for (std::size_t c = 0; c < n; ++c) {
+  // Corners nearest-neighbour distance first, ties to the lexicographically smaller point.
+  std::vector<std::size_t> order = all;
+  std::sort(order.begin(), order.end(), [&](std::size_t v, std::size_t w) {
+    const Q dv = d2(v, nn[v]), dw = d2(w, nn[w]);
+    return dv != dw ? dv < dw : points[v] < points[w];
+  });
+  for (const std::size_t c : order) {
     if (hn[c] < n || degree[c] >= 2) continue;
     const std::size_t a = nn[c];
     const std::size_t b = nearest(c, neighbors[c], [&](std::size_t x) {
