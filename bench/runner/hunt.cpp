@@ -338,10 +338,13 @@ Hunt_summary hunt(const Hunt_options& options) {
     // Greedy shrinking: the first shrink that shows the same defect, until none does.
     rc::Shrinkable<std::vector<Point>> current = drawn;
     std::size_t steps = 0;
+    const bool law = defect->kind.ends_with("-invariant");
     for (bool progress = true; progress && elapsed() < 2 * options.seconds + 30;) {
       progress = false;
       rc::Seq<rc::Shrinkable<std::vector<Point>>> shrinks = current.shrinks();
       while (rc::Maybe<rc::Shrinkable<std::vector<Point>>> next = shrinks.next()) {
+        // A law is only checked in general position: a shrink that leaves it cannot show one.
+        if (law && !general_position(next->value())) continue;
         std::optional<Defect> again = find_defect(*algorithm, next->value(), options.case_timeout);
         if (again && again->kind == defect->kind) {
           current = *next, defect = std::move(again), ++steps, progress = true;

@@ -34,10 +34,10 @@
 namespace curvebench::bench {
 
 struct Hunt_options {
-  std::string algorithm;         // a registered name or exec:COMMAND
+  std::string algorithm = {};    // a registered name or exec:COMMAND
   double seconds = 60;           // search time, shrinking included
   std::uint64_t seed = 0;
-  std::filesystem::path output;  // findings' directories; empty: none written
+  std::filesystem::path output = {};  // findings' directories; empty: none written
   double case_timeout = 10;      // seconds per run of the algorithm
   std::size_t max_findings = 1;  // per defect kind
   std::size_t stop_after = 0;    // stop the search after this many findings; 0: search for `seconds`

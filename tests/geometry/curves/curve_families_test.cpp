@@ -95,7 +95,7 @@ TEST(Spiral, GrowsFromItsInnerRadiusToOneWithoutCrossingItself) {
 }
 
 TEST(Lissajous, CrossesItselfTwoABMinusAMinusBTimes) {
-  for (const auto [a, b] : {std::pair{1, 2}, {1, 3}, {2, 3}, {3, 4}})
+  for (const auto& [a, b] : {std::pair{1, 2}, {1, 3}, {2, 3}, {3, 4}})
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       const Curve curve = lissajous_curve(a, b, seed);
       ASSERT_TRUE(valid_curve(curve));
@@ -132,7 +132,9 @@ TEST(RandomFourierCurves, SideBySideKeepTheirSeparationBetweenBoundingBoxes) {
   for (const Curve_component& component : curve.components) {
     const auto points = points_along(component, 4000);
     const auto box = CGAL::bbox_2(points.begin(), points.end());
-    if (previous_right > -HUGE_VAL) EXPECT_NEAR(box.xmin() - previous_right, 0.1, 1e-4);
+    if (previous_right > -HUGE_VAL) {
+      EXPECT_NEAR(box.xmin() - previous_right, 0.1, 1e-4);
+    }
     previous_right = box.xmax();
   }
 }

@@ -107,7 +107,7 @@ TEST(EpsilonSampling, PutsASampleOnTheCornerAndReportsWhereTheFloorWasHit) {
 // The crossing convention: one shared sample per crossing, of degree 4 in the ground truth,
 // where the Lissajous figure's closed form puts 2ab - a - b crossings.
 TEST(CrossingSamples, AddOneSharedPointOfDegreeFourPerCrossing) {
-  for (const auto [a, b] : {std::pair{1, 2}, {2, 3}}) {
+  for (const auto& [a, b] : {std::pair{1, 2}, {2, 3}}) {
     const Local_feature_size lfs(lissajous_curve(a, b, 1));
     const Sample plain = safe_epsilon_sampling(lfs, 0.3, default_minimum_lfs(lfs));
     const Sample crossed = with_crossing_samples(lfs, plain);
