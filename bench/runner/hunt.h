@@ -35,7 +35,7 @@ namespace curvebench::bench {
 
 struct Hunt_options {
   std::string algorithm = {};    // a registered name or exec:COMMAND
-  double seconds = 60;           // search time, shrinking included
+  double seconds = 60;           // search time; shrinking a finding may run on, to 2 seconds + 30 in all
   std::uint64_t seed = 0;
   std::filesystem::path output = {};  // findings' directories; empty: none written
   double case_timeout = 10;      // seconds per run of the algorithm
