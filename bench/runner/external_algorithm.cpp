@@ -6,10 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <csignal>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -22,6 +19,8 @@
 #include <vector>
 
 #include "algorithms/registry.h"
+#include "geometry/io/edge_io.h"
+#include "geometry/io/point_io.h"
 
 namespace curvebench::bench {
 namespace {
@@ -126,91 +125,44 @@ void run_program(const std::string& command, const fs::path& scratch) {
                              (first_line.empty() ? "" : ": " + first_line));
 }
 
-// The lines of an output file the program had to write.
-std::vector<std::string> output_lines(const fs::path& file, std::string_view what) {
+// An output file the program had to write, parsed by the project's own readers (the
+// same grammar as every point and edge file): any fault is Invalid_output, named "NAME:LINE".
+template <class Parse>
+auto parsed_output(const fs::path& file, std::string_view name, Parse parse) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw Invalid_output("the program wrote no " + std::string(what) + " file");
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) {
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
-    lines.push_back(line);
+  if (!in) throw Invalid_output("the program wrote no " + std::string(name) + " file");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  try {
+    return parse(text, name);
+  } catch (const geometry::ParseError& error) {
+    throw Invalid_output(error.what());
   }
-  return lines;
 }
 
-// "A B" with nothing else: two numbers of type T separated by blanks.
-template <class T>
-bool two_numbers(std::string_view line, T& a, T& b) {
-  const char* p = line.data();
-  const char* end = p + line.size();
-  const auto skip = [&] {
-    const char* start = p;
-    while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    return p > start;
-  };
-  skip();
-  auto r = std::from_chars(p, end, a);
-  if (r.ec != std::errc()) return false;
-  p = r.ptr;
-  if (!skip()) return false;
-  r = std::from_chars(p, end, b);
-  return r.ec == std::errc() && r.ptr == end;
-}
-
-std::string shown(const std::string& line) { return "'" + line.substr(0, 60) + (line.size() > 60 ? "...'" : "'"); }
-
-std::vector<Point> read_points_out(const fs::path& file) {
-  std::vector<Point> points;
-  std::size_t number = 0;
-  for (const std::string& line : output_lines(file, "points_out")) {
-    ++number;
-    if (line.empty()) continue;
-    double x = 0, y = 0;
-    if (!two_numbers(line, x, y) || !std::isfinite(x) || !std::isfinite(y))
-      throw Invalid_output("points_out line " + std::to_string(number) + ": " + shown(line) + " is not two finite numbers");
-    points.emplace_back(x, y);
-  }
-  return points;
-}
-
+// The edges, checked against the points they index as a ground truth's are.
 std::vector<algorithms::Edge> read_edges(const fs::path& file, std::size_t point_count) {
-  std::vector<algorithms::Edge> edges;
-  std::size_t number = 0;
-  for (const std::string& line : output_lines(file, "edges")) {
-    ++number;
-    if (line.empty()) continue;
-    const std::string where = "edges line " + std::to_string(number) + ": ";
-    std::size_t i = 0, j = 0;
-    if (!two_numbers(line, i, j)) throw Invalid_output(where + shown(line) + " is not two indices");
-    if (i >= point_count || j >= point_count)
+  const geometry::EdgeFile edges = parsed_output(file, "edges", geometry::parse_edge_file);
+  for (std::size_t k = 0; k < edges.edges.size(); ++k) {
+    const auto [i, j] = edges.edges[k];
+    const std::string where = "edges:" + std::to_string(edges.lines[k]) + ": ";
+    if (std::max(i, j) >= point_count)
       throw Invalid_output(where + "index " + std::to_string(std::max(i, j)) + " out of range (" +
                            std::to_string(point_count) + " points)");
     if (i == j) throw Invalid_output(where + "a self-loop at " + std::to_string(i));
-    edges.emplace_back(std::min(i, j), std::max(i, j));
   }
-  std::ranges::sort(edges);
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
+  return geometry::canonical_edges(edges.edges);
 }
 
 algorithms::Reconstruction run_external(const std::string& command, std::span<const Point> points) {
   const Scratch scratch;
   const fs::path input = scratch.path() / "points.xy", edges = scratch.path() / "edges.txt",
                  points_out = scratch.path() / "points_out.xy";
-  {
-    std::ofstream out(input);
-    char line[64];
-    for (const Point& p : points) {
-      std::snprintf(line, sizeof line, "%.17g %.17g\n", p.x(), p.y());
-      out << line;
-    }
-    if (!out.flush()) throw std::runtime_error("exec: cannot write " + input.string());
-  }
+  geometry::write_points(input, points);
   std::string line = replaced(command, "{points_out}", quoted(points_out));
   line = replaced(replaced(line, "{points}", quoted(input)), "{edges}", quoted(edges));
   run_program(line, scratch.path());
   if (command.find("{points_out}") == std::string::npos) return {read_edges(edges, points.size()), {}};
-  std::vector<Point> moved = read_points_out(points_out);
+  std::vector<Point> moved = parsed_output(points_out, "points_out", geometry::parse_point_file).points;
   std::vector<algorithms::Edge> found = read_edges(edges, moved.size());
   return {std::move(found), std::move(moved)};
 }

@@ -5,13 +5,16 @@
 //
 // COMMAND is a /bin/sh command line with placeholders, each replaced by a quoted path in a
 // fresh temporary directory:
-//   {points}      the input, written by curvebench: "x y" per line, 17 significant digits,
-//                 exact duplicates merged (as every built-in algorithm gets them)
+//   {points}      the input, written by curvebench: "x y" per line, each number the shortest
+//                 decimal that reads back to the same double, exact duplicates merged (as
+//                 every built-in algorithm gets them)
 //   {edges}       the output the program writes: "i j" per line, 0-based indices
 //   {points_out}  optional: points the program writes ("x y" per line) and {edges} indexes,
 //                 for an algorithm that moves or drops points
-// The output is read strictly: a missing file, a line that is not two indices, an index out
-// of range or a self-loop throws Invalid_output (status `invalid-output` in a run). A
+// The output is read by the project's own edge and point readers (geometry/io), and the
+// edges checked as a ground truth's are: a missing file, a malformed line, an index out of
+// range or a self-loop throws Invalid_output naming "edges:LINE" (status `invalid-output`
+// in a run). A
 // program killed by a signal (or exiting with 128 + its number, as a shell reports a killed
 // child) throws Program_crashed (`crashed`); another non-zero exit status is a plain failure
 // (`failed`) with the first line the program wrote to stderr. A program dies with the
