@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -16,6 +15,8 @@
 #include "algorithms/registry.h"
 #include "bench/runner/external_algorithm.h"
 #include "bench/runner/process_pool.h"
+#include "geometry/io/point_io.h"
+#include "geometry/point_set.h"
 
 namespace curvebench::bench {
 namespace {
@@ -190,12 +191,12 @@ struct Defect {
   std::vector<Point> variant;  // the transformed input a law compared against, if any
 };
 
-// Each point's first exact duplicate, so that edge sets compare whichever copy got the edges.
+// Each point's first exact duplicate (PointSet's policy), so that edge sets compare
+// whichever copy got the edges.
 std::vector<std::size_t> representatives(const std::vector<Point>& points) {
-  std::map<std::pair<double, double>, std::size_t> first;
+  const geometry::PointSet set(points);
   std::vector<std::size_t> result;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    result.push_back(first.emplace(std::pair(points[i].x(), points[i].y()), i).first->second);
+  for (std::size_t i = 0; i < points.size(); ++i) result.push_back(set.input_index(set.kept_index(i)));
   return result;
 }
 
@@ -206,11 +207,9 @@ std::vector<Edge> in_original_terms(const std::vector<Edge>& edges, const std::v
   std::vector<Edge> result;
   for (const auto& [i, j] : edges) {
     const std::size_t a = representative[original_of[i]], b = representative[original_of[j]];
-    if (a != b) result.emplace_back(std::min(a, b), std::max(a, b));
+    if (a != b) result.emplace_back(a, b);
   }
-  std::ranges::sort(result);
-  result.erase(std::unique(result.begin(), result.end()), result.end());
-  return result;
+  return geometry::canonical_edges(std::move(result));
 }
 
 std::string describe(const std::vector<Edge>& edges) {
@@ -281,15 +280,6 @@ std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const 
 
 // ---- Findings -------------------------------------------------------------------------------
 
-void write_points(const std::filesystem::path& file, const std::vector<Point>& points) {
-  std::ofstream out(file);
-  char line[80];
-  for (const Point& p : points) {
-    std::snprintf(line, sizeof line, "%.17g %.17g\n", p.x(), p.y());
-    out << line;
-  }
-}
-
 std::string shell_quoted(const std::string& text) {
   std::string quoted = "'";
   for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -299,8 +289,8 @@ std::string shell_quoted(const std::string& text) {
 void write_finding(Hunt_finding& finding, const Defect& defect, const Hunt_options& options, std::size_t number) {
   finding.directory = options.output / (finding.kind + "-" + std::to_string(number));
   std::filesystem::create_directories(finding.directory);
-  write_points(finding.directory / "points.xy", finding.points);
-  if (!defect.variant.empty()) write_points(finding.directory / "variant.xy", defect.variant);
+  geometry::write_points(finding.directory / "points.xy", finding.points);
+  if (!defect.variant.empty()) geometry::write_points(finding.directory / "variant.xy", defect.variant);
   std::error_code ignored;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ignored);
   std::ofstream replay(finding.directory / "replay.sh");

@@ -13,27 +13,25 @@
 namespace curvebench::bench {
 namespace {
 
-std::string program(const std::string& name) {
-  return "exec:/usr/bin/python3 " + std::string(CURVEBENCH_SOURCE_DIR) + "/tests/bench/programs/" + name +
-         " {points} {edges}";
-}
 
 std::string text_of(const std::filesystem::path& file) {
   std::ifstream in(file);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-Hunt_finding only_finding(const Hunt_options& options) {
-  const Hunt_summary summary = hunt(options);
+// The hunt for the defect planted in tests/bench/programs/NAME, stopped at its first
+// finding (within a minute), written under `dir`.
+Hunt_finding planted_finding(const std::string& name, const std::filesystem::path& dir) {
+  const std::string program = "exec:/usr/bin/python3 " + std::string(CURVEBENCH_SOURCE_DIR) + "/tests/bench/programs/" +
+                              name + " {points} {edges}";
+  const Hunt_summary summary = hunt({.algorithm = program, .seconds = 60, .output = dir, .stop_after = 1});
   EXPECT_EQ(summary.findings.size(), 1u);
   return summary.findings.empty() ? Hunt_finding{} : summary.findings.front();
 }
 
 TEST(Hunt, FindsTheCrashOnCollinearInputAndShrinksIt) {
   testing::TemporaryDirectory dir;
-  const Hunt_options options{
-      .algorithm = program("collinear_crash.py"), .seconds = 60, .output = dir.path(), .stop_after = 1};
-  const Hunt_finding finding = only_finding(options);
+  const Hunt_finding finding = planted_finding("collinear_crash.py", dir.path());
   EXPECT_EQ(finding.kind, "crash");
   EXPECT_NE(finding.message.find("signal 11"), std::string::npos) << finding.message;
   ASSERT_GE(finding.points.size(), 3u);
@@ -53,9 +51,7 @@ TEST(Hunt, FindsTheCrashOnCollinearInputAndShrinksIt) {
 
 TEST(Hunt, FindsTheOrderDependenceAndShrinksIt) {
   testing::TemporaryDirectory dir;
-  const Hunt_options options{
-      .algorithm = program("order_dependent.py"), .seconds = 60, .output = dir.path(), .stop_after = 1};
-  const Hunt_finding finding = only_finding(options);
+  const Hunt_finding finding = planted_finding("order_dependent.py", dir.path());
   EXPECT_EQ(finding.kind, "not-permutation-invariant");
   EXPECT_LE(finding.points.size(), 4u);
   EXPECT_TRUE(std::filesystem::exists(finding.directory / "variant.xy"));  // the permuted input, to replay
