@@ -6,6 +6,7 @@
 #include <memory>
 #include <numeric>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -14,8 +15,8 @@
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Search_traits_2.h>
-#include <CGAL/box_intersection_d.h>
 
+#include "geometry/curves/closed_polyline.h"
 #include "geometry/curves/curve_crossings.h"
 #include "geometry/curves/curve_name.h"
 
@@ -185,49 +186,48 @@ std::uint64_t derived_seed(std::uint64_t seed, std::uint64_t attempt) {
   return z ^ (z >> 31);
 }
 
-// Whether the closed polyline through `points` crosses or touches itself anywhere but at
-// the shared vertex of consecutive edges, by exact predicates. Candidate pairs come from
-// CGAL's box intersection (bounding boxes of the edges).
-bool closed_polyline_is_simple(const std::vector<Point>& points) {
-  const std::size_t n = points.size();
-  const auto edge = [&](std::size_t i) { return Kernel::Segment_2(points[i], points[(i + 1) % n]); };
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-  std::vector<Box> boxes;
-  for (std::size_t i = 0; i < n; ++i) boxes.emplace_back(edge(i).bbox(), i);
-  bool simple = true;
-  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
-    std::size_t i = std::min(a.info(), b.info()), j = std::max(a.info(), b.info());
-    if (!simple) return;
-    if (j == i + 1 || (i == 0 && j == n - 1)) {
-      if (i == 0 && j == n - 1) std::swap(i, j);  // edge i ends where edge j starts
-      const Point &p = points[i], &q = points[(i + 1) % n], &r = points[(j + 1) % n];
-      simple = !(CGAL::collinear(p, q, r) && !CGAL::collinear_are_ordered_along_line(p, q, r));
-    } else {
-      simple = !CGAL::do_intersect(edge(i), edge(j));
-    }
-  });
-  return simple;
+// `samples` points of a closed one-piece curve at equal parameter steps, its start first.
+std::vector<Point> closed_polyline(const Curve_piece& piece, int samples) {
+  std::vector<Point> points;
+  for (int i = 0; i < samples; ++i) points.push_back(piece.point(double(i) / samples));
+  return points;
 }
 
 constexpr int simplicity_samples = 8192;
+
+// The tangent of a closed component sampled at `samples` equal parameter steps: its total
+// turn (radians, counterclockwise positive), if no step turns it by more than 45°, and the
+// slowest speed and the sum of the speeds.
+struct Tangent_walk {
+  std::optional<double> turning;  // none: a step turned more than 45°
+  double slowest = HUGE_VAL, total_speed = 0;
+};
+
+Tangent_walk walk_tangent(const Curve_component& component, int samples) {
+  Tangent_walk walk;
+  double turning = 0;
+  Vector previous = component.derivative(0);
+  for (int i = 1; i <= samples; ++i) {
+    const Vector d = component.derivative(double(i % samples) / samples);
+    const double speed = std::hypot(d.x(), d.y()), step = std::atan2(CGAL::determinant(previous, d), previous * d);
+    if (std::abs(step) > std::numbers::pi / 4) return walk;
+    walk.slowest = std::min(walk.slowest, speed);
+    walk.total_speed += speed;
+    turning += step;
+    previous = d;
+  }
+  walk.turning = turning;
+  return walk;
+}
 
 // Whether the closed component is regular (speed at least 1% of its mean) and its tangent
 // turns once round counterclockwise (Hopf's Umlaufsatz: a simple closed curve's turning
 // number is ±1), turning less than 45° between samples. A polyline can step over a loop smaller
 // than its chords, but the loop's extra turn of the tangent cannot hide.
 bool turns_once(const Curve_component& component) {
-  double slowest = HUGE_VAL, total = 0, turning = 0;
-  Vector previous = component.derivative(0);
-  for (int i = 1; i <= simplicity_samples; ++i) {
-    const Vector d = component.derivative(double(i % simplicity_samples) / simplicity_samples);
-    const double speed = std::hypot(d.x(), d.y()), step = std::atan2(CGAL::determinant(previous, d), previous * d);
-    if (std::abs(step) > std::numbers::pi / 4) return false;
-    slowest = std::min(slowest, speed);
-    total += speed;
-    turning += step;
-    previous = d;
-  }
-  return slowest >= 1e-2 * total / simplicity_samples && std::abs(turning - two_pi) < std::numbers::pi;
+  const Tangent_walk walk = walk_tangent(component, simplicity_samples);
+  return walk.turning && walk.slowest >= 1e-2 * walk.total_speed / simplicity_samples &&
+         std::abs(*walk.turning - two_pi) < std::numbers::pi;
 }
 
 }  // namespace
@@ -285,11 +285,10 @@ std::vector<Fourier_piece::Harmonic> simple_fourier_terms(std::uint64_t seed, co
       const double bx = symmetric_unit(engine), by = symmetric_unit(engine);
       terms.push_back({k, scale * Vector(ax, ay), scale * Vector(bx, by)});
     }
-    const Curve curve = single_piece_curve("", std::make_shared<Fourier_piece>(terms));
-    const auto& component = curve.components.front();
-    std::vector<Point> polyline;
-    for (int i = 0; i < simplicity_samples; ++i) polyline.push_back(component.point(double(i) / simplicity_samples));
-    if (turns_once(component) && closed_polyline_is_simple(polyline)) return terms;
+    const auto piece = std::make_shared<Fourier_piece>(terms);
+    const Curve curve = single_piece_curve("", piece);
+    if (turns_once(curve.components.front()) && closed_polyline_is_simple(closed_polyline(*piece, simplicity_samples)))
+      return terms;
   }
   throw std::invalid_argument("fourier: no simple regular curve in 1000 attempts; lower the amplitude");
 }
@@ -336,12 +335,6 @@ Curve random_fourier_arc(std::uint64_t seed, const Fourier_curve_parameters& par
 
 namespace {
 
-std::vector<Point> closed_polyline(const Fourier_piece& piece, int samples) {
-  std::vector<Point> points;
-  for (int i = 0; i < samples; ++i) points.push_back(piece.point(double(i) / samples));
-  return points;
-}
-
 // The smallest distance from a point of `points` to the dense points of `tree`: within
 // (chord length)^2 / (8 distance) of the distance between the curves they sample.
 using Point_tree = CGAL::Kd_tree<CGAL::Search_traits_2<Kernel>>;
@@ -352,23 +345,6 @@ double smallest_distance(const Point_tree& tree, const std::vector<Point>& point
     smallest = std::min(smallest, std::sqrt(nearest.begin()->second));
   }
   return smallest;
-}
-
-// Whether the closed polylines a and b cross or touch, by exact predicates.
-bool polylines_meet(const std::vector<Point>& a, const std::vector<Point>& b) {
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-  const auto edge = [](const std::vector<Point>& points, std::size_t i) {
-    return Kernel::Segment_2(points[i], points[(i + 1) % points.size()]);
-  };
-  std::vector<Box> boxes_a, boxes_b;
-  for (std::size_t i = 0; i < a.size(); ++i) boxes_a.emplace_back(edge(a, i).bbox(), i);
-  for (std::size_t i = 0; i < b.size(); ++i) boxes_b.emplace_back(edge(b, i).bbox(), i);
-  bool meet = false;
-  CGAL::box_intersection_d(boxes_a.begin(), boxes_a.end(), boxes_b.begin(), boxes_b.end(),
-                           [&](const Box& i, const Box& j) {
-                             meet = meet || CGAL::do_intersect(edge(a, i.info()), edge(b, j.info()));
-                           });
-  return meet;
 }
 
 }  // namespace
@@ -403,7 +379,7 @@ Curve nested_fourier_curves(std::uint64_t seed, double separation) {
     }
     const Fourier_piece inner(scaled(low));
     const std::vector<Point> inner_points = closed_polyline(inner, simplicity_samples);
-    if (polygon.bounded_side(inner_points.front()) != CGAL::ON_BOUNDED_SIDE || polylines_meet(outer_points, inner_points))
+    if (polygon.bounded_side(inner_points.front()) != CGAL::ON_BOUNDED_SIDE || closed_polylines_meet(outer_points, inner_points))
       continue;  // not star-shaped enough about the origin: draw another inner curve
     Curve curve{"nested:seed=" + std::to_string(seed) + ",separation=" + format_number(separation), {}};
     for (const auto& terms : {outer_terms, scaled(low)}) {
@@ -460,12 +436,7 @@ namespace {
 // sampling can tell them apart.
 int transversal_crossings(const Curve& curve, int samples) {
   const Curve_component& component = curve.components.front();
-  Vector previous = component.derivative(0);
-  for (int i = 1; i <= samples; ++i) {
-    const Vector d = component.derivative(double(i % samples) / samples);
-    if (std::abs(std::atan2(CGAL::determinant(previous, d), previous * d)) > std::numbers::pi / 4) return -1;
-    previous = d;
-  }
+  if (!walk_tangent(component, samples).turning) return -1;
   std::vector<std::vector<double>> parameters(1);
   for (int i = 0; i < samples; ++i) parameters[0].push_back(double(i) / samples);
   const std::vector<Curve_crossing> crossings = curve_crossings(curve, parameters);

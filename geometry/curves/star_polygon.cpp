@@ -6,6 +6,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "geometry/curves/closed_polyline.h"
 #include "geometry/curves/curve_name.h"
 
 namespace curvebench::geometry {
@@ -19,16 +20,6 @@ Vector rotated(const Vector& v, double angle) {
 }
 
 double length(const Vector& v) { return std::sqrt(v.squared_length()); }
-
-// A closed polygon is simple if no two non-adjacent sides meet (exact predicates; few sides).
-bool simple(const std::vector<Point>& vertices) {
-  const std::size_t n = vertices.size();
-  const auto side = [&](std::size_t i) { return Kernel::Segment_2(vertices[i], vertices[(i + 1) % n]); };
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 2; j < n; ++j)
-      if (!(i == 0 && j == n - 1) && CGAL::do_intersect(side(i), side(j))) return false;
-  return true;
-}
 
 // The vertices of one draw (tip, inner corner, tip, ...), or none if the draw is unusable.
 std::vector<Point> star_vertices(std::mt19937_64& engine, double angle) {
@@ -57,7 +48,7 @@ std::vector<Point> star_vertices(std::mt19937_64& engine, double angle) {
     vertices.push_back(t0);
     vertices.push_back(inner);
   }
-  if (!simple(vertices)) return {};
+  if (!closed_polyline_is_simple(vertices)) return {};
   for (std::size_t i = 1; i < vertices.size(); i += 2) {  // every inner corner turns right, by 10° or more
     const Vector in = vertices[i] - vertices[i - 1], out = vertices[(i + 1) % vertices.size()] - vertices[i];
     if (std::atan2(CGAL::determinant(in, out), in * out) > -10 * degree) return {};
