@@ -17,6 +17,7 @@ test_packages=(
   libbenchmark-dev libgtest-dev
   clang-14 libclang-rt-14-dev
   chromium
+  python3-scipy
 )
 case "${1:-test}" in
   run) packages=("${run_packages[@]}") ;;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "algorithms/registry.h"
+#include "bench/cli/algorithm_options.h"
 #include "bench/runner/certification.h"
 
 namespace curvebench::cli {
@@ -22,10 +23,8 @@ struct Certify_command_options {
 };
 
 void run(Certify_command_options& o) {
-  std::string name = o.algorithm;
-  std::ranges::replace(name, '_', '-');  // nn_crust names nn-crust too
-  const algorithms::Algorithm* algorithm = algorithms::find_algorithm(name);
-  if (!algorithm) throw std::invalid_argument("unknown algorithm '" + o.algorithm + "' (see `curvebench list`)");
+  const algorithms::Algorithm* algorithm = &chosen_algorithm(o.algorithm);
+  std::string name(algorithm->name);
   if (o.below_bound) o.certify.below_bound = *o.below_bound;
   if (!o.shard.empty()) std::tie(o.certify.run.shard, o.certify.run.shards) = bench::parse_shard(o.shard);
   o.certify.run.output = o.output.empty() ? std::filesystem::path("out") / ("certify-" + name) : o.output;
@@ -70,8 +69,11 @@ void add_certify_command(CLI::App& app) {
   auto o = std::make_shared<Certify_command_options>();
   CLI::App* command = app.add_subcommand(
       "certify", "Check an algorithm's sampling-condition theorem on generated curves, shrinking counterexamples");
-  command->add_option("-a,--algorithm", o->algorithm, "Algorithm with a proven epsilon bound (see `curvebench list`)")
+  command->add_option("-a,--algorithm", o->algorithm,
+                      "Algorithm with a proven epsilon bound (see `curvebench list`), or an external one from "
+                      "--algorithm-file with a claimed one")
       ->required();
+  add_algorithm_file_option(command);
   command->add_option("--curves", o->certify.curves, "fourier (random smooth closed curves), multi (2 or 3 of them side by side), svg or glyphs")
       ->check(CLI::IsMember({"fourier", "svg", "glyphs"}))
       ->capture_default_str();

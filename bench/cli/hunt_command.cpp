@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench/cli/algorithm_options.h"
 #include "bench/runner/hunt.h"
 
 namespace curvebench::cli {
@@ -52,7 +53,9 @@ void add_hunt_command(CLI::App& app) {
   auto o = std::make_shared<Hunt_command_options>();
   CLI::App* command = app.add_subcommand(
       "hunt", "Search an algorithm (built-in or exec:) for crashes, hangs, invalid output and broken laws, shrunk");
-  command->add_option("-a,--algorithm", o->hunt.algorithm, "Algorithm name or exec:COMMAND")->required();
+  command->add_option("-a,--algorithm", o->hunt.algorithm, "Algorithm name, exec:COMMAND or a name from --algorithm-file")
+      ->required();
+  add_algorithm_file_option(command);
   command->add_option("--seconds", o->hunt.seconds, "Search time; shrinking a finding may add up to as much again")
       ->capture_default_str();
   command->add_option("--seed", o->hunt.seed, "Seed of the generated inputs")->capture_default_str();

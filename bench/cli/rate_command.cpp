@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "algorithms/registry.h"
+#include "bench/cli/algorithm_options.h"
+#include "bench/runner/external_algorithm.h"
 #include "geometry/curves/curve_spec.h"
 #include "geometry/sampling/sampling.h"
 
@@ -69,10 +71,7 @@ void rate_curve(const std::string& spec, const Rate_options& options,
 }
 
 void run_rate(const Rate_options& options) {
-  std::vector<const algorithms::Algorithm*> chosen;
-  for (const auto& algorithm : algorithms::registry())
-    if (options.algorithms.empty() || std::ranges::find(options.algorithms, algorithm.name) != options.algorithms.end())
-      chosen.push_back(&algorithm);
+  const std::vector<const algorithms::Algorithm*> chosen = bench::find_algorithms(algorithm_names(options.algorithms));
   std::vector<std::string> specs;
   for (const std::string& spec : options.curves)
     for (std::string& one : geometry::expand_curve_specs(spec)) specs.push_back(std::move(one));
@@ -116,7 +115,9 @@ void add_rate_command(CLI::App& app) {
   command->add_option("-c,--curves", options->curves, "Curve specs (glyph:* = every glyph of DejaVuSans.ttf)")
       ->capture_default_str();
   command->add_option("-e,--epsilon", options->epsilons, "Epsilons to sample at")->delimiter(',')->capture_default_str();
-  command->add_option("-a,--algorithms", options->algorithms, "Algorithms to rate (default: all)")->delimiter(',');
+  command->add_option("-a,--algorithms", options->algorithms,
+                      "Algorithms to rate (default: all): NAME,NAME,...; repeat -a for each exec:COMMAND");
+  add_algorithm_file_option(command);
   command->add_option("--stride", options->stride, "Rate every k-th curve only")->capture_default_str();
   command->add_option("-j,--jobs", options->jobs, "Threads (default: all cores)");
   command->callback([options] { run_rate(*options); });

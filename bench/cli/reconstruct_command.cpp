@@ -9,6 +9,7 @@
 
 #include "algorithms/registry.h"
 #include "bench/runner/external_algorithm.h"
+#include "bench/cli/algorithm_options.h"
 #include "bench/cli/input.h"
 #include "geometry/io/edge_io.h"
 #include "geometry/io/point_io.h"
@@ -58,7 +59,7 @@ void add_reconstruct_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("reconstruct", "Reconstruct a curve from a point file");
   command->add_option("-a,--algorithm", options->algorithm,
                       "Algorithm name (see `curvebench list`); NAME+outlier-filter drops outliers first; "
-                      "exec:COMMAND runs a program, e.g. 'exec:python3 mine.py {points} {edges}'")
+                      "exec:COMMAND runs a program, e.g. 'exec:python3 mine.py {points} {edges}'; or a name from --algorithm-file")
       ->required()
       ->check(CLI::Validator(
           [](const std::string& name) {
@@ -69,6 +70,7 @@ void add_reconstruct_command(CLI::App& app) {
             }
           },
           "ALGORITHM"));
+  add_algorithm_file_option(command);
   command->add_option("-p,--parameters", options->parameters,
                       "Parameter values as name=value,... (defaults in `curvebench list`)");
   command->add_option("-i,--input", options->input, "Point file (x y per line, or any format of data/README.md)")

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/runner/external_algorithm.h"
+#include "bench/cli/algorithm_options.h"
 #include "bench/runner/run.h"
 
 namespace curvebench::cli {
@@ -28,21 +28,6 @@ const std::map<std::string, bench::Pictures> picture_modes{{"some", bench::Pictu
 constexpr const char* pictures_help =
     "Pictures of reconstructions: some (per algorithm and suite, its first 6 failures and its first 2 jobs), all, "
     "failures (every job not exact) or none";
-
-// NAME,NAME,... split at commas, but an exec:COMMAND whole: a command line may hold commas.
-std::vector<std::string> algorithm_names(const std::vector<std::string>& given) {
-  std::vector<std::string> names;
-  for (const std::string& item : given) {
-    if (item.starts_with(bench::external_prefix)) {
-      names.push_back(item);
-      continue;
-    }
-    std::stringstream list(item);
-    for (std::string name; std::getline(list, name, ',');)
-      if (!name.empty()) names.push_back(name);
-  }
-  return names;
-}
 
 void run(Run_command_options& o) {
   o.run.algorithms = algorithm_names(o.algorithms);
@@ -72,7 +57,8 @@ void add_run_commands(CLI::App& app) {
       ->required();
   command->add_option("-a,--algorithms", o->algorithms,
                       "Algorithms to run (default: all): NAME,NAME,...; repeat -a for each external exec:COMMAND "
-                      "(see `curvebench reconstruct --help`)");
+                      "(see `curvebench reconstruct --help`) or a name from --algorithm-file");
+  add_algorithm_file_option(command);
   command->add_option("-j,--jobs", o->run.jobs, "Worker processes (default: one per core)");
   command->add_option("--shard", o->shard, "Run shard K of N (K/N), for job arrays; combine with `curvebench merge`");
   command->add_flag("--resume", o->run.resume, "Continue an interrupted run in the same directory");

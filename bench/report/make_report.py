@@ -134,7 +134,7 @@ def ordered(values):
 
 
 COLUMNS = ("job suite input level algorithm params n_points epsilon rho uniformity status exact hausdorff rms normal_deviation "
-           "manifold components open_components closed_components unconnected true_topology runtime_ms picture message").split()
+           "manifold components open_components closed_components unconnected true_topology runtime_ms startup_ms picture message").split()
 
 
 def read_rows(path):
@@ -187,6 +187,8 @@ def group_stats(rows):
         "manifold": percent(flag(r["manifold"]) for r in ok),
         "true_topology": wilson(r["_true_topology"] for r in rows),
         "runtime": mean(number(r["runtime_ms"]) for r in ok),
+        # An external program's start-up (its wall time on no points), included in its runtime.
+        "startup": mean(number(r["startup_ms"]) for r in rows if r["startup_ms"]),
         "failures": failures,
     }
 
@@ -306,8 +308,10 @@ def grouped_bars(run, rows, metric, title, ylabel, path, percent_axis=False):
 
 def runtime_chart(run, path):
     """Mean runtime of ok jobs per algorithm on a log axis (the survey's runtime figure)."""
-    values = [group_stats([r for r in run.rows if r["algorithm"] == a])["runtime"] for a in run.algorithms]
-    positive = [v for v in values if v is not None and v > 0]  # make_charts ensures one
+    stats = [group_stats([r for r in run.rows if r["algorithm"] == a]) for a in run.algorithms]
+    values = [st["runtime"] for st in stats]
+    startups = [st["startup"] for st in stats]
+    positive = [v for v in values + startups if v is not None and v > 0]  # make_charts ensures one
     fig, ax = plt.subplots(figsize=(max(6.0, 1.0 + 0.6 * len(run.algorithms)), 4.0))
     ax.set_yscale("log")
     lo = 10 ** math.floor(math.log10(min(positive)))
@@ -319,6 +323,11 @@ def runtime_chart(run, path):
             ax.text(x, v, format(v, ".3g"), ha="center", va="bottom", fontsize=8)
         else:
             mark_undrawn(ax, x, v, run.colour[a], lo)
+    # A program's start-up, part of its runtime, as a black line across its bar.
+    for x, startup in enumerate(startups):
+        if startup is not None and startup > 0:
+            ax.plot([x - 0.35, x + 0.35], [startup, startup], color="black", linewidth=2)
+            ax.text(x + 0.37, startup, f"start-up {startup:.3g}", fontsize=7, va="center")
     ax.set_xticks(range(len(run.algorithms)))
     tick_labels(ax, run.algorithms)
     ax.set_ylabel("mean runtime per job [ms] (log)")
@@ -415,7 +424,8 @@ def make_charts(run, charts_dir):
     made[None].append(("status.svg", "Jobs per status; the messages are under Non-ok jobs."))
     if any((number(r["runtime_ms"]) or 0) > 0 for r in run.rows if r["_ok"]):
         runtime_chart(run, charts_dir / "runtime.svg")
-        made[None].append(("runtime.svg", f"Mean runtime of ok jobs; {NOT_DRAWN} = no ok job."))
+        made[None].append(("runtime.svg", f"Mean runtime of ok jobs; {NOT_DRAWN} = no ok job; a black line across a bar is "
+                                          "an external program's start-up (its wall time on no points), part of its runtime."))
     for suite in run.suites:
         rows = run.suite_rows(suite)
         if any(number(r["rms"]) is not None for r in rows):
@@ -584,7 +594,7 @@ def nonok_table(rows):
 SUMMARY_COLUMNS = ("suite level algorithm jobs exact_k exact_n exact_pct exact_low exact_high "
                    "true_topology_k true_topology_n true_topology_pct true_topology_low true_topology_high "
                    "rms_n rms_mean rms_low rms_high hausdorff_n hausdorff_mean hausdorff_low hausdorff_high "
-                   "runtime_ms_mean").split()
+                   "runtime_ms_mean startup_ms").split()
 
 
 def write_summary(run, path):
@@ -610,7 +620,8 @@ def write_summary(run, path):
                 st = group_stats(group)
                 table.append([suite, level, a, st["jobs"]] + cells(st["exact_interval"]) + cells(st["true_topology"])
                              + means(st["rms_interval"]) + means(st["hausdorff_interval"])
-                             + ["" if st["runtime"] is None else st["runtime"]])
+                             + ["" if st["runtime"] is None else st["runtime"]]
+                             + ["" if st["startup"] is None else st["startup"]])
     with open(path, "w", newline="", encoding="utf-8") as f:
         out = csv.writer(f, lineterminator="\n")
         out.writerow(SUMMARY_COLUMNS)

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "bench/runner/bench_input.h"
+#include "bench/runner/external_algorithm.h"
 #include "bench/runner/results_table.h"
 #include "certify/theorems.h"
 #include "geometry/curves/curve_spec.h"
@@ -109,7 +110,7 @@ Counterexample shrink(const algorithms::Algorithm& algorithm, const certify::The
   replay << "#!/bin/sh\n# " << algorithm.name << " does not reconstruct " << input << "\n# (" << made.points.size()
          << " points, measured epsilon " << row[Column::epsilon] << " < " << theorem.epsilon_below
          << "). Run from this directory with curvebench on PATH.\n"
-         << "curvebench reconstruct -a " << algorithm.name
+         << "curvebench reconstruct " << replay_arguments(algorithm)
          << " -i points.xy -o reconstruction.edges --svg reconstruction.svg\n"
          << "curvebench evaluate -i points.xy -e reconstruction.edges -g truth.edges\n";
   return {input, made.points.size(), std::stod(row[Column::epsilon]), directory};

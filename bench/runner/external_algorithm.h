@@ -3,6 +3,8 @@
 //
 //   exec:COMMAND   e.g.  exec:python3 my_recon.py {points} {edges}
 //
+// or by the name a file of named algorithms gives it (algorithm_file.h, `--algorithms FILE`).
+//
 // COMMAND is a /bin/sh command line with placeholders, each replaced by a quoted path in a
 // fresh temporary directory:
 //   {points}      the input, written by curvebench: "x y" per line, each number the shortest
@@ -11,18 +13,23 @@
 //   {edges}       the output the program writes: "i j" per line, 0-based indices
 //   {points_out}  optional: points the program writes ("x y" per line) and {edges} indexes,
 //                 for an algorithm that moves or drops points
+//   {NAME}        a declared parameter's value
 // The output is read by the project's own edge and point readers (geometry/io), and the
 // edges checked as a ground truth's are: a missing file, a malformed line, an index out of
 // range or a self-loop throws Invalid_output naming "edges:LINE" (status `invalid-output`
-// in a run). A
-// program killed by a signal (or exiting with 128 + its number, as a shell reports a killed
-// child) throws Program_crashed (`crashed`); another non-zero exit status is a plain failure
-// (`failed`) with the first line the program wrote to stderr. A program dies with the
-// process that runs it, so a run's timeout stops it too.
+// in a run). A program killed by a signal (or exiting with 128 + its number, as a shell
+// reports a killed child) throws Program_crashed (`crashed`), one past its declared timeout
+// Program_timed_out (`timeout`); another non-zero exit status is a plain failure (`failed`)
+// with the last line the program wrote to stderr. A program dies with the process that
+// runs it, so a run's own timeout stops it too.
 #pragma once
 
+#include <filesystem>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "algorithms/algorithm.h"
 
@@ -34,13 +41,70 @@ struct Invalid_output : std::runtime_error {
 struct Program_crashed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// The program ran past its declared timeout and was killed (status `timeout`).
+struct Program_timed_out : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 inline constexpr std::string_view external_prefix = "exec:";
 
-// The registered algorithm of that name, or the external one an exec: name declares (made
-// once, kept for the life of the process); nullptr for an unknown registered name. Throws
-// std::invalid_argument for a bad declaration: an unknown placeholder, no {points} or no
-// {edges}, or a program that does not exist.
+// A parameter of a program, substituted into its command as {NAME}: its value, or the
+// default, as the shortest decimal (an integer parameter as an integer).
+struct External_parameter {
+  std::string name;
+  bool integer = false;
+  double default_value = 0, minimum = 0, maximum = 0;
+  std::string meaning = {};
+};
+
+// What makes a program an algorithm. `exec:COMMAND` declares only `name` (= the whole
+// text) and `command`; a file of named algorithms (algorithm_file.h) can say the rest.
+struct External_declaration {
+  std::string name;
+  std::string title = {};  // default: the name
+  std::string command;     // a /bin/sh command line with {points}, {edges}, optionally {points_out} and {PARAMETER}s
+  enum class Point_format { xy, csv } input_format = Point_format::xy;  // csv: an `x,y` header, then `x,y` lines
+  int index_base = 0;  // the program numbers points from 0 (C, Python) or 1 (MATLAB, Julia, R)
+  std::vector<External_parameter> parameters = {};
+  std::optional<double> timeout_seconds = {};  // per run of the program, besides the run's own --timeout
+  bool repeatable = true;                      // false: the same input may give different output
+  // The claimed sampling condition, which `certify` and `hunt` check like a theorem's.
+  std::string condition = "none declared";
+  std::optional<double> epsilon_below = {}, rho_below = {}, uniformity_below = {};
+  std::filesystem::path file = {};  // the file that declared it (absolute), if one did
+};
+
+// Makes `declaration` an algorithm found by its name, for the life of the process. Throws
+// std::invalid_argument for a bad declaration (an unknown placeholder, no {points} or no
+// {edges}, a program that does not exist, a bad parameter range or index base) or a name
+// that is taken.
+const algorithms::Algorithm& declare_external_algorithm(External_declaration declaration);
+
+// The registered algorithm of that name, a declared one, or the external one an exec: name
+// declares (made once, kept for the life of the process); nullptr for an unknown name.
+// Throws std::invalid_argument for a bad exec: declaration.
 const algorithms::Algorithm* find_any_algorithm(std::string_view name);
+
+// The algorithms of those names (find_any_algorithm); with none, every registered algorithm
+// and every one declared by name, in the order declared. Throws std::invalid_argument for an
+// unknown name or a bad exec: declaration.
+std::vector<const algorithms::Algorithm*> find_algorithms(const std::vector<std::string>& names);
+
+// The declaration behind an external algorithm; nullptr for a built-in one.
+const External_declaration* external_declaration(const algorithms::Algorithm& algorithm);
+
+// `text` in single quotes for /bin/sh.
+std::string shell_quoted(std::string_view text);
+
+// The arguments that name `algorithm` on a replay's command line: -a NAME, and the
+// --algorithm-file that declares it, if one does; shell-quoted.
+std::string replay_arguments(const algorithms::Algorithm& algorithm);
+
+// The program's wall time on an input of no points, in milliseconds: the median of three
+// runs, whatever each ends with (a program may refuse an empty input, yet it started), each
+// cut at its timeout or startup_timeout_seconds. What a run reports beside the program's
+// runtime, so that an interpreter's start-up is seen as such. 0 for a built-in algorithm.
+inline constexpr double startup_timeout_seconds = 10;
+double startup_milliseconds(const algorithms::Algorithm& algorithm);
 
 }  // namespace curvebench::bench

@@ -13,8 +13,12 @@
 #include <stdexcept>
 
 #include "algorithms/registry.h"
+#include "bench/runner/bench_input.h"
 #include "bench/runner/external_algorithm.h"
 #include "bench/runner/process_pool.h"
+#include "bench/runner/results_table.h"
+#include "certify/theorems.h"
+#include "geometry/io/edge_io.h"
 #include "geometry/io/point_io.h"
 #include "geometry/point_set.h"
 
@@ -82,6 +86,41 @@ rc::Gen<std::vector<Point>> point_sets() {
       });
 }
 
+// A case: a point set, or a curve sampling named as a benchmark input (bench_input.h), whose
+// points, ground truth and measured epsilon are made from the name when the case runs. The
+// generator keeps the name only, so that drawing and shrinking cost nothing.
+struct Hunt_case {
+  std::vector<Point> points;
+  std::string curve;  // empty for a point set
+};
+
+// Smooth closed curves (one or two Fourier curves) sampled near and beyond the algorithm's
+// epsilon bound: at 0.95, 0.8 and 0.5 of it, where the theorem demands an exact
+// reconstruction, and at 1.2 and 2 times it, where only a crash, a hang or invalid output
+// is a defect. Without a bound, at epsilon 0.6 to 0.1. Each shrinks towards one curve of
+// one harmonic, seed 0, and the coarsest sampling (the fewest points) under the bound.
+rc::Gen<std::string> curve_samplings(std::optional<double> bound) {
+  const std::vector<double> levels = bound ? std::vector<double>{0.95 * *bound, 0.8 * *bound, 0.5 * *bound, 1.2 * *bound, 2 * *bound}
+                                           : std::vector<double>{0.6, 0.4, 0.2, 0.1};
+  return rc::gen::map(rc::gen::tuple(rc::gen::inRange(1, 3), rc::gen::inRange(1, 9), rc::gen::inRange(0, 1 << 20),
+                                     rc::gen::inRange(0, int(levels.size()))),
+                      [levels](const std::tuple<int, int, int, int>& drawn) {
+                        const auto& [components, harmonics, seed, level] = drawn;
+                        const double epsilon = levels[std::size_t(level)];
+                        return "fourier:seed=" + std::to_string(seed) + ",harmonics=" + std::to_string(harmonics) +
+                               (components > 1 ? ",components=" + std::to_string(components) : "") +
+                               "|epsilon=" + format_number(epsilon);
+                      });
+}
+
+// Three point sets to one curve sampling: the degenerate families find most defects, and a
+// sampling costs a medial axis to measure.
+rc::Gen<Hunt_case> hunt_cases(std::optional<double> bound) {
+  const auto as_points = rc::gen::map(point_sets(), [](std::vector<Point> points) { return Hunt_case{std::move(points), {}}; });
+  const auto as_curve = rc::gen::map(curve_samplings(bound), [](std::string curve) { return Hunt_case{{}, std::move(curve)}; });
+  return rc::gen::oneOf(as_points, as_points, as_points, as_curve);
+}
+
 // ---- One run of the algorithm, in a worker process ------------------------------------
 
 // What a run gave: edges (between input points unless `moved` is set), a clear error, or
@@ -112,6 +151,8 @@ std::string run_in_worker(const algorithms::Algorithm& algorithm, std::span<cons
     return std::string("invalid\n") + error.what();
   } catch (const Program_crashed& error) {
     return std::string("crash\n") + error.what();
+  } catch (const Program_timed_out& error) {
+    return std::string("hang\n") + error.what();
   } catch (const std::exception& error) {
     return std::string("error\n") + error.what();
   }
@@ -124,7 +165,10 @@ Outcome parse_outcome(const std::string& text) {
   std::getline(in, kind);
   Outcome outcome;
   if (kind != "edges") {
-    outcome.kind = kind == "invalid" ? Outcome::Kind::invalid : kind == "crash" ? Outcome::Kind::crash : Outcome::Kind::error;
+    outcome.kind = kind == "invalid" ? Outcome::Kind::invalid
+                   : kind == "crash" ? Outcome::Kind::crash
+                   : kind == "hang"  ? Outcome::Kind::hang
+                                     : Outcome::Kind::error;
     std::getline(in, outcome.message);
     return outcome;
   }
@@ -191,6 +235,19 @@ struct Defect {
   std::vector<Point> variant;  // the transformed input a law compared against, if any
 };
 
+// A case made: its points, and for a curve sampling the ground truth and measured sampling.
+struct Made_case {
+  std::vector<Point> points;
+  std::optional<std::vector<Edge>> truth;
+  std::optional<double> epsilon, uniformity;
+};
+
+Made_case made(const Hunt_case& c) {
+  if (c.curve.empty()) return {c.points, {}, {}, {}};
+  Bench_input input = std::move(make_bench_inputs(std::vector<std::string>{c.curve}).front());
+  return {std::move(input.points), std::move(input.truth), input.epsilon, input.uniformity};
+}
+
 // Each point's first exact duplicate (PointSet's policy), so that edge sets compare
 // whichever copy got the edges.
 std::vector<std::size_t> representatives(const std::vector<Point>& points) {
@@ -212,17 +269,21 @@ std::vector<Edge> in_original_terms(const std::vector<Edge>& edges, const std::v
   return geometry::canonical_edges(std::move(result));
 }
 
+// The first dozen edges as "i-j ...": enough to see a small case, short for a sampled one.
 std::string describe(const std::vector<Edge>& edges) {
+  constexpr std::size_t shown = 12;
   std::string text;
-  for (const auto& [i, j] : edges) {
+  for (std::size_t k = 0; k < std::min(edges.size(), shown); ++k) {
     if (!text.empty()) text.push_back(' ');
-    text.append(std::to_string(i)).append("-").append(std::to_string(j));
+    text.append(std::to_string(edges[k].first)).append("-").append(std::to_string(edges[k].second));
   }
+  if (edges.size() > shown) text.append(" and ").append(std::to_string(edges.size() - shown)).append(" more");
   return text.empty() ? "(none)" : text;
 }
 
-std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const std::vector<Point>& points,
-                                  double timeout) {
+std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const Made_case& made_case, double timeout,
+                                  const std::optional<certify::Theorem>& theorem) {
+  const std::vector<Point>& points = made_case.points;
   const std::size_t n = points.size();
   std::vector<std::vector<Point>> inputs{points, points};
   std::vector<std::size_t> rotated(n), identity(n);  // the variant's point k is the input's rotated[k]
@@ -235,8 +296,11 @@ std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const 
     mirrored.emplace_back(-points[i].x(), points[i].y());
     doubles_exactly = doubles_exactly && std::isfinite(doubled.back().x()) && std::isfinite(doubled.back().y());
   }
-  inputs.insert(inputs.end(), {permuted, mirrored});
-  if (doubles_exactly) inputs.push_back(doubled);
+  // A curve sampling is in general position but for a rare draw, and too large to check:
+  // the laws are left to the small point sets, whose findings are easier to read anyway.
+  const bool sampled = made_case.truth.has_value();
+  if (!sampled) inputs.insert(inputs.end(), {permuted, mirrored});
+  if (!sampled && doubles_exactly) inputs.push_back(doubled);
   // The input alone first: most findings show there, and a clear error ends the case.
   std::vector<Outcome> outcomes = run_each(algorithm, {points}, timeout);
   if (outcomes[0].kind == Outcome::Kind::edges) {
@@ -260,6 +324,22 @@ std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const 
       !std::equal(first.moved.begin(), first.moved.end(), outcomes[1].moved.begin()))
     return Defect{"not-deterministic", "two runs on the same input differ: " + describe(first.edges) + " / " +
                                            describe(outcomes[1].edges), {}};
+  // The algorithm's own claim: exact under its epsilon (and uniformity) bound, as certify
+  // classifies a case.
+  if (sampled && theorem) {
+    const bool exact = first.moved.empty() && first.edges == *made_case.truth;
+    const double epsilon = made_case.epsilon.value_or(INFINITY);
+    if (certify::classify(*theorem, epsilon, exact, made_case.uniformity.value_or(INFINITY)) == certify::Verdict::failure) {
+      std::vector<Edge> wrong, missing;
+      std::ranges::set_difference(first.edges, *made_case.truth, std::back_inserter(wrong));
+      std::ranges::set_difference(*made_case.truth, first.edges, std::back_inserter(missing));
+      std::string message = "measured epsilon " + format_number(epsilon) + " < " + format_number(theorem->epsilon_below) +
+                            ", yet not exact:";
+      if (!wrong.empty()) message += " " + std::to_string(wrong.size()) + " wrong edges (" + describe(wrong) + ")";
+      if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + describe(missing) + ")";
+      return Defect{"not-exact-under-condition", message, {}};
+    }
+  }
   if (!algorithm.repeatable || !first.moved.empty() || !general_position(points)) return std::nullopt;
   const std::vector<std::size_t> representative = representatives(points);
   const std::vector<Edge> expected = in_original_terms(first.edges, identity, representative);
@@ -280,28 +360,28 @@ std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const 
 
 // ---- Findings -------------------------------------------------------------------------------
 
-std::string shell_quoted(const std::string& text) {
-  std::string quoted = "'";
-  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-void write_finding(Hunt_finding& finding, const Defect& defect, const Hunt_options& options, std::size_t number) {
+void write_finding(Hunt_finding& finding, const Defect& defect, const Made_case& made_case,
+                   const algorithms::Algorithm& algorithm, const Hunt_options& options, std::size_t number) {
   finding.directory = options.output / (finding.kind + "-" + std::to_string(number));
   std::filesystem::create_directories(finding.directory);
   geometry::write_points(finding.directory / "points.xy", finding.points);
+  if (made_case.truth) geometry::write_edges(finding.directory / "truth.edges", *made_case.truth);
   if (!defect.variant.empty()) geometry::write_points(finding.directory / "variant.xy", defect.variant);
   std::error_code ignored;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ignored);
   std::ofstream replay(finding.directory / "replay.sh");
-  replay << "#!/bin/sh\n# " << finding.kind << ": " << finding.message << "\n# found by curvebench hunt -a "
-         << shell_quoted(options.algorithm) << " --seed " << options.seed << ", shrunk in " << finding.shrink_steps
-         << " steps to " << finding.points.size() << " points\ncd \"$(dirname \"$0\")\"\n"
-         << shell_quoted(self.string()) << " reconstruct -a " << shell_quoted(options.algorithm)
+  replay << "#!/bin/sh\n# " << finding.kind << ": " << finding.message << "\n# found by curvebench hunt "
+         << replay_arguments(algorithm) << " --seed " << options.seed << ", shrunk in " << finding.shrink_steps
+         << " steps to " << finding.points.size() << " points"
+         << (finding.curve.empty() ? "" : "\n# the sampling " + finding.curve + " (points.xy; truth.edges its ground truth)")
+         << "\ncd \"$(dirname \"$0\")\"\n"
+         << shell_quoted(self.string()) << " reconstruct " << replay_arguments(algorithm)
          << " -i points.xy -o edges.txt && cat edges.txt\n";
+  if (made_case.truth)
+    replay << shell_quoted(self.string()) << " evaluate -i points.xy -e edges.txt -g truth.edges\n";
   if (!defect.variant.empty())
     replay << "echo 'on variant.xy (the same points transformed):'\n"
-           << shell_quoted(self.string()) << " reconstruct -a " << shell_quoted(options.algorithm)
+           << shell_quoted(self.string()) << " reconstruct " << replay_arguments(algorithm)
            << " -i variant.xy -o variant-edges.txt && cat variant-edges.txt\n";
   replay.close();
   std::filesystem::permissions(finding.directory / "replay.sh", std::filesystem::perms::owner_exec,
@@ -313,38 +393,45 @@ void write_finding(Hunt_finding& finding, const Defect& defect, const Hunt_optio
 Hunt_summary hunt(const Hunt_options& options) {
   const algorithms::Algorithm* algorithm = find_any_algorithm(options.algorithm);
   if (!algorithm) throw std::invalid_argument("unknown algorithm '" + options.algorithm + "' (see `curvebench list`)");
+  const std::optional<certify::Theorem> theorem = certify::theorem_of(*algorithm);
   const auto start = Clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   Hunt_summary summary;
   std::map<std::string, std::size_t> found;  // per kind
-  const rc::Gen<std::vector<Point>> generator = point_sets();
+  const rc::Gen<Hunt_case> generator = hunt_cases(theorem ? std::optional(theorem->epsilon_below) : std::nullopt);
+  const auto defect_of = [&](const Hunt_case& c, Made_case& made_case) {
+    made_case = made(c);
+    return find_defect(*algorithm, made_case, options.case_timeout, theorem);
+  };
   for (std::uint64_t i = 0; elapsed() < options.seconds; ++i) {
     if (options.stop_after > 0 && summary.findings.size() >= options.stop_after) break;
-    const rc::Shrinkable<std::vector<Point>> drawn = generator(rc::Random(options.seed * 0x9E3779B97F4A7C15ULL + i),
-                                                                5 + int(i * 7 % 60));
+    const rc::Shrinkable<Hunt_case> drawn = generator(rc::Random(options.seed * 0x9E3779B97F4A7C15ULL + i), 5 + int(i * 7 % 60));
     ++summary.cases;
-    std::optional<Defect> defect = find_defect(*algorithm, drawn.value(), options.case_timeout);
+    Made_case made_case;
+    std::optional<Defect> defect = defect_of(drawn.value(), made_case);
     if (!defect || found[defect->kind] >= options.max_findings) continue;
     // Greedy shrinking: the first shrink that shows the same defect, until none does.
-    rc::Shrinkable<std::vector<Point>> current = drawn;
+    rc::Shrinkable<Hunt_case> current = drawn;
     std::size_t steps = 0;
     const bool law = defect->kind.ends_with("-invariant");
     for (bool progress = true; progress && elapsed() < 2 * options.seconds + 30;) {
       progress = false;
-      rc::Seq<rc::Shrinkable<std::vector<Point>>> shrinks = current.shrinks();
-      while (rc::Maybe<rc::Shrinkable<std::vector<Point>>> next = shrinks.next()) {
+      rc::Seq<rc::Shrinkable<Hunt_case>> shrinks = current.shrinks();
+      while (rc::Maybe<rc::Shrinkable<Hunt_case>> next = shrinks.next()) {
+        const Hunt_case candidate = next->value();
         // A law is only checked in general position: a shrink that leaves it cannot show one.
-        if (law && !general_position(next->value())) continue;
-        std::optional<Defect> again = find_defect(*algorithm, next->value(), options.case_timeout);
+        if (law && !general_position(candidate.points)) continue;
+        Made_case made_candidate;
+        std::optional<Defect> again = defect_of(candidate, made_candidate);
         if (again && again->kind == defect->kind) {
-          current = *next, defect = std::move(again), ++steps, progress = true;
+          current = *next, defect = std::move(again), made_case = std::move(made_candidate), ++steps, progress = true;
           break;
         }
       }
     }
-    Hunt_finding finding{defect->kind, defect->message, current.value(), steps, {}};
+    Hunt_finding finding{defect->kind, defect->message, made_case.points, steps, {}, current.value().curve, made_case.epsilon};
     const std::size_t number = ++found[defect->kind];
-    if (!options.output.empty()) write_finding(finding, *defect, options, number);
+    if (!options.output.empty()) write_finding(finding, *defect, made_case, *algorithm, options, number);
     summary.findings.push_back(std::move(finding));
   }
   return summary;

@@ -1,11 +1,13 @@
 // `curvebench hunt`: a black-box, property-based search for defects of one algorithm,
 // built-in or external (exec:), with RapidCheck's generators and shrinking.
 //
-// Inputs: small point sets (0 to about 12 points) on an integer lattice, from five families:
-// any points, collinear runs, cocircular points, grid points and crowded points
-// (duplicates); scaled by a power of two that reaches 2^±1000 and the limits of double,
-// and with one coordinate moved by one ulp or none. Defects, each checked in a worker process of its own (a crash or a hang
-// costs only its case):
+// Inputs, three of four: small point sets (0 to about 12 points) on an integer lattice, from
+// five families: any points, collinear runs, cocircular points, grid points and crowded points
+// (duplicates); scaled by a power of two that reaches 2^±1000 and the limits of double, and
+// with one coordinate moved by one ulp or none. One of four: a smooth closed curve (one or
+// two Fourier curves) sampled near and beyond the algorithm's epsilon bound (0.5, 0.8 and
+// 0.95 of it, 1.2 and 2 times it; without a bound, epsilon 0.6 to 0.1). Defects, each checked
+// in a worker process of its own (a crash or a hang costs only its case):
 //   crash           the algorithm (or program) was killed by a signal
 //   hang            it ran past the case timeout
 //   invalid-output  edges out of range, self-loops, unsorted or repeated (built-in), or
@@ -18,14 +20,20 @@
 //                   repeatable algorithms that keep the input points, on input in general
 //                   position (no duplicate, three collinear, four cocircular or two equal
 //                   distances: there an algorithm breaks ties as it may)
+//   not-exact-under-condition
+//                   a curve sampling whose measured epsilon (and local uniformity) meets
+//                   the algorithm's own bound, certify's hypothesis, reconstructed not
+//                   exactly (certify/theorems.h: the same verdict as `curvebench certify`)
 // A clear error (an exception, a non-zero exit with a message) is not a defect. Each finding
 // is shrunk greedily through RapidCheck's shrinks (fewer points, then smaller coordinates
-// and scale) while it shows the same defect, and written to DIR/KIND-N/ as points.xy, the
-// defect's description and replay.sh.
+// and scale; for a sampling: one curve, fewer harmonics, seed 0, the coarsest level) while it
+// shows the same defect, and written to DIR/KIND-N/ as points.xy (truth.edges for a
+// sampling), the defect's description and replay.sh.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +57,8 @@ struct Hunt_finding {
   std::vector<geometry::Point> points;  // the shrunk input
   std::size_t shrink_steps = 0;
   std::filesystem::path directory;      // where it was written, if it was
+  std::string curve = {};               // the sampling's input name (bench_input.h), if it is one
+  std::optional<double> epsilon = {};   // its measured epsilon
 };
 
 struct Hunt_summary {

@@ -15,7 +15,7 @@ constexpr std::string_view names[column_count] = {
     "job",        "suite",      "input",           "level",           "algorithm",       "params",
     "n_points",   "epsilon",    "rho",             "uniformity",      "status",          "exact",           "hausdorff",
     "rms",        "normal_deviation", "manifold", "components",      "open_components", "closed_components",
-    "unconnected", "true_topology", "runtime_ms", "picture",   "message"};
+    "unconnected", "true_topology", "runtime_ms", "startup_ms", "picture", "message"};
 
 enum class Kind { integer, real, boolean, text };
 
@@ -25,7 +25,7 @@ Kind kind_of(std::size_t column) {
     case Column::closed_components: case Column::unconnected:
       return Kind::integer;
     case Column::epsilon: case Column::rho: case Column::uniformity: case Column::hausdorff: case Column::rms: case Column::normal_deviation:
-    case Column::runtime_ms:
+    case Column::runtime_ms: case Column::startup_ms:
       return Kind::real;
     case Column::exact: case Column::manifold: case Column::true_topology:
       return Kind::boolean;

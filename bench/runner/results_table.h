@@ -16,7 +16,7 @@ namespace curvebench::bench {
 
 enum class Column {
   job, suite, input, level, algorithm, params, n_points, epsilon, rho, uniformity, status, exact, hausdorff, rms, normal_deviation,
-  manifold, components, open_components, closed_components, unconnected, true_topology, runtime_ms, picture, message,
+  manifold, components, open_components, closed_components, unconnected, true_topology, runtime_ms, startup_ms, picture, message,
 };
 inline constexpr std::size_t column_count = static_cast<std::size_t>(Column::message) + 1;
 

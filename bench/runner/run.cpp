@@ -40,18 +40,6 @@ struct Job {
   bool success_picture = false;  // Pictures::some draws it even if it is exact
 };
 
-std::vector<const algorithms::Algorithm*> chosen_algorithms(const std::vector<std::string>& names) {
-  std::vector<const algorithms::Algorithm*> chosen;
-  if (names.empty())
-    for (const algorithms::Algorithm& algorithm : algorithms::registry()) chosen.push_back(&algorithm);
-  for (const std::string& name : names) {
-    const algorithms::Algorithm* algorithm = find_any_algorithm(name);
-    if (!algorithm) throw std::invalid_argument("unknown algorithm '" + name + "' (see `curvebench list`)");
-    chosen.push_back(algorithm);
-  }
-  return chosen;
-}
-
 Result_row job_row(const Job& job, const Suite_case& c) {
   Result_row row;
   row[Column::job] = std::to_string(job.number);
@@ -168,6 +156,9 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
     row[Column::message] = error.what();
   } catch (const Program_crashed& error) {
     row[Column::status] = "crashed";
+    row[Column::message] = error.what();
+  } catch (const Program_timed_out& error) {
+    row[Column::status] = "timeout";
     row[Column::message] = error.what();
   } catch (const std::exception& error) {
     row[Column::status] = "failed";
@@ -332,7 +323,7 @@ Result_row lost_job_row(const Job& job, const Suite_case& c, const Bench_input& 
 Run_summary run_suite(const Run_options& options) {
   const Suite* suite = find_suite(options.suite);
   if (!suite) throw std::invalid_argument("unknown suite '" + options.suite + "' (see `curvebench list suites`)");
-  return run_cases(suite_cases(*suite), chosen_algorithms(options.algorithms), options);
+  return run_cases(suite_cases(*suite), find_algorithms(options.algorithms), options);
 }
 
 Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen,
@@ -349,10 +340,18 @@ Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<co
   for (const Job& job : jobs)
     if (!done[job.number]) pending.push_back(job);
 
+  // A program's start-up, measured once, goes beside each of its runtimes: what an
+  // interpreter costs before the algorithm does anything.
+  std::map<std::string, std::string, std::less<>> startup;
+  if (!pending.empty())
+    for (const algorithms::Algorithm* algorithm : chosen)
+      if (external_declaration(*algorithm)) startup[std::string(algorithm->name)] = format_number(startup_milliseconds(*algorithm));
+
   Run_summary summary{.jobs = jobs.size(), .resumed = jobs.size() - pending.size()};
   Progress progress(pending.size(), options.progress);
   std::ofstream out(csv, std::ios::binary | std::ios::app);
-  const auto record = [&](const Result_row& row) {
+  const auto record = [&](Result_row row) {
+    if (const auto found = startup.find(row[Column::algorithm]); found != startup.end()) row[Column::startup_ms] = found->second;
     out << row.csv() << '\n' << std::flush;
     rows.push_back(row);
     const std::string& status = row[Column::status];
