@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/cli/ambiguity_command.h"
+#include "bench/cli/annotate_command.h"
 #include "bench/cli/certify_command.h"
 #include "bench/cli/evaluate_command.h"
 #include "bench/cli/graph_command.h"
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
   curvebench::cli::add_certify_command(app);
   curvebench::cli::add_ambiguity_command(app);
   curvebench::cli::add_hunt_command(app);
+  curvebench::cli::add_annotate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
