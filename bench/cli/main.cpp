@@ -12,6 +12,7 @@
 #include "bench/cli/hunt_command.h"
 #include "bench/cli/image_command.h"
 #include "bench/cli/list_command.h"
+#include "bench/cli/make_input_command.h"
 #include "bench/cli/measure_command.h"
 #include "bench/cli/perturb_commands.h"
 #include "bench/cli/rate_command.h"
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
   curvebench::cli::add_ambiguity_command(app);
   curvebench::cli::add_hunt_command(app);
   curvebench::cli::add_annotate_command(app);
+  curvebench::cli::add_make_input_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

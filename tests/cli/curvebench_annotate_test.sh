@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Checks `curvebench annotate` without a browser: the page holds
+# Checks `curvebench annotate` and `curvebench make-input` without a browser: the page holds
 # the points (kept ones, with their input numbering when duplicates merge) and the existing
-# edges, and a bad point or edge file is a one-line error.
+# edges, a bad point or edge file is a one-line error, and make-input writes a job's input.
 # The page itself is driven in Chromium by tests/browser/annotate_test.py.
 # Usage: curvebench_annotate_test.sh PATH/TO/curvebench
 set -uo pipefail
@@ -45,5 +45,12 @@ check "and says so" grep -q "far.edges: edge 0 9 names a point beyond the 4 of t
 printf '0 1\n1 x\n' >"$work/bad.edges"
 "$curvebench" annotate -i "$work/square.xy" -e "$work/bad.edges" -o "$work/page" 2>"$work/err"
 check "a malformed edge file names its line" grep -q "bad.edges:2: " "$work/err"
+
+# make-input: a job's input as results.csv names it, with its ground truth.
+"$curvebench" make-input 'circle:r=1|uniform=12' -o "$work/circle" >/dev/null
+check "make-input writes the 12 points" test "$(wc -l <"$work/circle.xy")" -eq 12
+check "make-input writes the 12 ground-truth edges" test "$(wc -l <"$work/circle.edges")" -eq 12
+"$curvebench" make-input 'circle:r=1|bogus=3' -o "$work/bogus" 2>"$work/err"
+check "make-input rejects a malformed name" test $? -eq 2
 
 finish
