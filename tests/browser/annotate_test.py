@@ -2,7 +2,8 @@
 """The annotation page of `curvebench annotate` in headless Chromium, clicked as a person would.
 
 A pentagon's 5 points clicked in order and closed save as the 5-cycle; one undo saves the
-4-edge path; `evaluate` and `measure` (through a `truth:` curve) accept the saved file; the
+4-edge path; `evaluate`, `measure` and a benchmark input (`make-input`, as `run` makes its
+inputs) accept the saved file through a `truth:` curve; the
 page warns about points no curve visits and about a vertex of degree 3, and logs no console
 error. Then a 10^4-point sample with its ground truth loaded measures how fast the page
 answers, and a glyph with part of its ground truth gives the screenshot.
@@ -91,6 +92,8 @@ def pentagon(driver):
           and evaluation["closed_components"] == 1, evaluation)
     measure = json.loads(curvebench("measure", "--curve", f"truth:{points}:{cycle_file}", "-i", points, "-e", cycle_file))
     check("measure accepts it as a truth: curve", measure["points"] == 5, measure)
+    made = curvebench("make-input", f"truth:{points}:{cycle_file}|uniform=50", "-o", WORK / "resampled")
+    check("a benchmark input (as `run` reads them) samples it as a truth: curve", "50 ground-truth edges" in made, made)
     path_eval = json.loads(curvebench("evaluate", "-i", points, "-e", DOWNLOADS / "pentagon.edges", "-g", cycle_file))
     check("the path is one open curve, not exact", path_eval["open_components"] == 1 and not path_eval["exact"],
           path_eval)
