@@ -103,6 +103,14 @@ def pentagon(driver):
     click_point(driver, 0)
     click_point(driver, 2)
     check("degree 3 is warned about", "1 vertices of degree > 2: 2" in status(driver), status(driver))
+    # Clicking the chord's middle (far from every point) deletes it.
+    canvas = driver.find_element(By.ID, "canvas")
+    a, b = (driver.execute_script("return window.curvebenchAnnotate.screenOf(arguments[0])", i) for i in (0, 2))
+    ActionChains(driver).move_to_element_with_offset(
+        canvas, round((a["x"] + b["x"]) / 2 - canvas.size["width"] / 2),
+        round((a["y"] + b["y"]) / 2 - canvas.size["height"] / 2)).click().perform()
+    check("clicking an edge deletes it", save(driver, "pentagon.edges") == PENTAGON_PATH and "⚠" not in status(driver),
+          status(driver))
     errors = chromium.console_errors(driver)
     check("no console errors", not errors, errors)
 
@@ -146,6 +154,8 @@ def screenshot(driver):
     driver.save_screenshot(str(WORK / "annotate.png"))
     check("screenshot written", (WORK / "annotate.png").stat().st_size > 0)
     check("the partial truth is warned about", "points no curve visits" in status(driver), status(driver))
+    errors = chromium.console_errors(driver)
+    check("no console errors on the larger pages", not errors, errors)
 
 
 def main():

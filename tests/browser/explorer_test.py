@@ -77,6 +77,12 @@ def small_run(driver):
           f"{row_count(driver)} shown, {len(expected)} in results.csv")
     check("the run has such rows (else the test proves little)", len(expected) > 0)
 
+    choose(driver, "sort", "RMS ↓")
+    first = driver.find_element(By.CSS_SELECTOR, "#rows tr").get_attribute("data-row")
+    worst = max((r for r in expected if r["rms"]), key=lambda r: float(r["rms"]))
+    check("sorted by RMS, largest first", int(first) == rows.index(worst), f"row {first}, job {worst['job']}")
+    choose(driver, "sort", "job")
+
     # The first listed row with a picture: click it, its picture loads.
     pictured = [r for r in expected if r["picture"]]
     row = driver.find_element(By.CSS_SELECTOR, f'#rows tr[data-row="{rows.index(pictured[0])}"]')
