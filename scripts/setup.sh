@@ -16,7 +16,7 @@ run_packages=(
 test_packages=(
   libbenchmark-dev libgtest-dev
   clang-14 libclang-rt-14-dev
-  chromium
+  chromium chromium-driver python3-selenium
   python3-scipy
 )
 case "${1:-test}" in

@@ -5,12 +5,14 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/cli/ambiguity_command.h"
+#include "bench/cli/annotate_command.h"
 #include "bench/cli/certify_command.h"
 #include "bench/cli/evaluate_command.h"
 #include "bench/cli/graph_command.h"
 #include "bench/cli/hunt_command.h"
 #include "bench/cli/image_command.h"
 #include "bench/cli/list_command.h"
+#include "bench/cli/make_input_command.h"
 #include "bench/cli/measure_command.h"
 #include "bench/cli/perturb_commands.h"
 #include "bench/cli/rate_command.h"
@@ -36,6 +38,8 @@ int main(int argc, char** argv) {
   curvebench::cli::add_certify_command(app);
   curvebench::cli::add_ambiguity_command(app);
   curvebench::cli::add_hunt_command(app);
+  curvebench::cli::add_annotate_command(app);
+  curvebench::cli::add_make_input_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

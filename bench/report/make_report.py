@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Turns the results.csv of `curvebench run SUITE -o DIR` into DIR/report.html and DIR/charts/*.svg.
+"""Turns the results.csv of `curvebench run SUITE -o DIR` into DIR/report.html, DIR/charts/*.svg and the
+interactive DIR/explorer.html (explorer.py).
 
 Usage: /usr/bin/python3 bench/report/make_report.py DIR
 
@@ -23,6 +24,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
+
+from explorer import write_explorer  # noqa: E402  (beside this script)
 
 STATUS_COLOURS = {"ok": "#4c9a2a", "failed": "#f0a030", "invalid-output": "#8c564b", "crashed": "#d62728",
                   "timeout": "#7b4ea3"}
@@ -812,7 +815,8 @@ def report_html(run, charts, out_dir, csv_path):
             f"<p>{counted(len(run.rows), 'job')} in {counted(len(run.suites), 'suite')}: {suites}.<br>"
             f"{counted(len(run.algorithms), 'algorithm')}: {esc(', '.join(run.algorithms))}.<br>Status: "
             + esc(", ".join(f"{s or '(empty)'} {n}" for s, n in status_counts.most_common()))
-            + '. <a href="#nonok">Non-ok jobs</a>.</p>')
+            + '. <a href="#nonok">Non-ok jobs</a>. <a href="explorer.html">Explore the results</a>: filter, '
+            'sort, compare two algorithms on the same input, replay a job.</p>')
         exact_matrix = matrix_table(run, "_exact", "exact")
         topology_matrix = matrix_table(run, "_true_topology", "true topology")
         if exact_matrix:
@@ -842,6 +846,7 @@ def main(argv):
     run = Run(read_rows(csv_path))
     charts = make_charts(run, out_dir / "charts")
     write_summary(run, out_dir / "summary.csv")
+    write_explorer(run, out_dir)
     (out_dir / "report.html").write_text(report_html(run, charts, out_dir, csv_path), encoding="utf-8")
     print(f"make_report: {out_dir / 'report.html'} ({len(run.rows)} jobs, "
           f"{sum(len(c) for c in charts.values())} charts)")
