@@ -4,9 +4,13 @@
 
 namespace curvebench::certify {
 
-std::optional<Theorem> theorem_of(const algorithms::Algorithm& algorithm) {
-  if (!algorithm.condition.epsilon_below) return std::nullopt;
-  return Theorem{&algorithm, *algorithm.condition.epsilon_below, algorithm.condition.uniformity_below};
+std::string_view measure_name(Measure measure) { return measure == Measure::rho ? "rho" : "epsilon"; }
+
+std::optional<Theorem> theorem_of(const algorithms::Algorithm& algorithm, Measure measure) {
+  const std::optional<double>& bound =
+      measure == Measure::rho ? algorithm.condition.rho_below : algorithm.condition.epsilon_below;
+  if (!bound) return std::nullopt;
+  return Theorem{&algorithm, measure, *bound, algorithm.condition.uniformity_below};
 }
 
 std::vector<Theorem> theorems() {
@@ -25,13 +29,13 @@ std::string_view verdict_name(Verdict verdict) {
   }
 }
 
-Verdict classify(const Theorem& theorem, double measured_epsilon, bool exact, double measured_uniformity) {
-  if (!(measured_epsilon < theorem.epsilon_below)) return Verdict::hypothesis_violation;
+Verdict classify(const Theorem& theorem, double measured, bool exact, double measured_uniformity) {
+  if (!(measured < theorem.bound)) return Verdict::hypothesis_violation;
   // u is a ratio of two lengths in doubles: no margin is kept, a case that close to the
   // bound is a coin toss of rounding either way.
   if (theorem.uniformity_below && !(measured_uniformity < *theorem.uniformity_below))
     return Verdict::hypothesis_violation;
-  if (!(measured_epsilon * (1 + epsilon_relative_error) < theorem.epsilon_below)) return Verdict::inconclusive;
+  if (!(measured * (1 + epsilon_relative_error) < theorem.bound)) return Verdict::inconclusive;
   return exact ? Verdict::passed : Verdict::failure;
 }
 

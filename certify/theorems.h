@@ -11,21 +11,27 @@
 
 namespace curvebench::certify {
 
+// What a theorem bounds: epsilon (Amenta and Bern's sampling) or rho (HNN-Crust's).
+enum class Measure { epsilon, rho };
+std::string_view measure_name(Measure measure);
+
 struct Theorem {
   const algorithms::Algorithm* algorithm = nullptr;
-  double epsilon_below = 0;  // the hypothesis: measured epsilon < epsilon_below
+  Measure measure = Measure::epsilon;
+  double bound = 0;  // the hypothesis: the measured epsilon (or rho) < bound
   std::optional<double> uniformity_below = {};  // and, if set, local uniformity u < this
 };
 
 // The registry's algorithms with an epsilon bound, in registry order.
 std::vector<Theorem> theorems();
-// The theorem of one algorithm (any Algorithm, also one that is not registered);
-// std::nullopt if its condition has no epsilon bound.
-std::optional<Theorem> theorem_of(const algorithms::Algorithm& algorithm);
+// The theorem of one algorithm on `measure` (any Algorithm, also one that is not
+// registered); std::nullopt if its condition has no such bound.
+std::optional<Theorem> theorem_of(const algorithms::Algorithm& algorithm, Measure measure = Measure::epsilon);
 
 // lfs is estimated from a dense sample of the medial axis (geometry/lfs/local_feature_size.h)
 // and over-estimates the true lfs by a relative 2e-4 at most on the curves measured
-// there; a measured epsilon is therefore trusted to this relative margin, with room.
+// there; a measured epsilon (or rho, a distance over the least lfs) is therefore trusted
+// to this relative margin, with room.
 inline constexpr double epsilon_relative_error = 1e-3;
 
 enum class Verdict {
@@ -40,6 +46,6 @@ std::string_view verdict_name(Verdict verdict);
 // The verdict on one case: its measured epsilon (infinite near an unsampled sharp point),
 // whether the algorithm reconstructed it exactly, and its local uniformity over the
 // ground truth (certify/sampling_measure.h; only read if the theorem bounds it).
-Verdict classify(const Theorem& theorem, double measured_epsilon, bool exact, double measured_uniformity = 1);
+Verdict classify(const Theorem& theorem, double measured, bool exact, double measured_uniformity = 1);
 
 }  // namespace curvebench::certify

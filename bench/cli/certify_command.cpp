@@ -19,27 +19,30 @@ struct Certify_command_options {
   std::optional<double> below_bound;
   std::filesystem::path output;
   std::string shard;
-  bool json = false, quiet = false;
+  bool rho = false, json = false, quiet = false;
 };
 
 void run(Certify_command_options& o) {
   const algorithms::Algorithm* algorithm = &chosen_algorithm(o.algorithm);
   std::string name(algorithm->name);
   if (o.below_bound) o.certify.below_bound = *o.below_bound;
+  if (o.rho) o.certify.measure = certify::Measure::rho;
   if (!o.shard.empty()) std::tie(o.certify.run.shard, o.certify.run.shards) = bench::parse_shard(o.shard);
   o.certify.run.output = o.output.empty() ? std::filesystem::path("out") / ("certify-" + name) : o.output;
   o.certify.run.progress = !o.quiet && !o.json;
   o.certify.run.pictures = bench::Pictures::failures;
   const bench::Certify_summary s = bench::certify_algorithm(*algorithm, o.certify);
 
+  const std::string measure(certify::measure_name(s.measure));
   nlohmann::json counterexamples = nlohmann::json::array();
   for (const bench::Counterexample& c : s.counterexamples)
-    counterexamples.push_back({{"input", c.input}, {"points", c.points}, {"epsilon", c.epsilon},
+    counterexamples.push_back({{"input", c.input}, {"points", c.points}, {measure, c.measured},
                                {"path", c.directory.string()}, {"replay", (c.directory / "replay.sh").string()}});
   const nlohmann::json summary = {
       {"algorithm", s.algorithm},
       {"bound", s.bound},
-      {"requested_epsilon", s.requested_epsilon},
+      {"measure", measure},
+      {"requested_level", s.requested_level},
       {"curves", o.certify.curves},
       {"seed", o.certify.seed},
       {"cases", s.cases},
@@ -54,12 +57,12 @@ void run(Certify_command_options& o) {
     std::cout << summary.dump(2) << '\n';
     return;
   }
-  std::cout << s.algorithm << ": epsilon < " << s.bound << ", " << s.cases << " " << o.certify.curves
-            << " cases sampled at epsilon " << s.requested_epsilon << ": " << s.passed << " passed, " << s.failures
+  std::cout << s.algorithm << ": " << measure << " < " << s.bound << ", " << s.cases << " " << o.certify.curves
+            << " cases sampled at " << measure << " " << s.requested_level << ": " << s.passed << " passed, " << s.failures
             << " failures, " << s.inconclusive << " inconclusive, " << s.hypothesis_violations
             << " hypothesis violations\n";
   for (const bench::Counterexample& c : s.counterexamples)
-    std::cout << "counterexample: " << c.input << " (" << c.points << " points, measured epsilon " << c.epsilon
+    std::cout << "counterexample: " << c.input << " (" << c.points << " points, measured " << measure << " " << c.measured
               << "): sh " << (c.directory / "replay.sh").string() << '\n';
 }
 
@@ -68,18 +71,22 @@ void run(Certify_command_options& o) {
 void add_certify_command(CLI::App& app) {
   auto o = std::make_shared<Certify_command_options>();
   CLI::App* command = app.add_subcommand(
-      "certify", "Check an algorithm's sampling-condition theorem on generated curves, shrinking counterexamples");
+      "certify", "Check an algorithm's sampling-condition theorem (on epsilon, or with --rho on rho) on generated "
+                 "curves, shrinking counterexamples");
   command->add_option("-a,--algorithm", o->algorithm,
                       "Algorithm with a proven epsilon bound (see `curvebench list`), or an external one from "
                       "--algorithm-file with a claimed one")
       ->required();
   add_algorithm_file_option(command);
-  command->add_option("--curves", o->certify.curves, "fourier (random smooth closed curves), multi (2 or 3 of them side by side), svg or glyphs")
-      ->check(CLI::IsMember({"fourier", "svg", "glyphs"}))
+  command->add_option("--curves", o->certify.curves,
+                      "fourier (random smooth closed curves), multi (2 or 3 of them side by side), nested (one inside "
+                      "another), rounded (stars with rounded corners), mixed (the four in turn), svg or glyphs")
+      ->check(CLI::IsMember({"fourier", "multi", "nested", "rounded", "mixed", "svg", "glyphs"}))
       ->capture_default_str();
   command->add_option("--count", o->certify.count, "Number of cases")->capture_default_str();
-  auto* at = command->add_option_group("epsilon", "where to sample");
-  at->add_option("--epsilon", o->certify.epsilon, "Sample at this epsilon");
+  command->add_flag("--rho", o->rho, "Certify the theorem on rho (HNN-Crust's rho < 0.9), not on epsilon");
+  auto* at = command->add_option_group("level", "where to sample");
+  at->add_option("--epsilon", o->certify.level, "Sample at this epsilon (with --rho: this rho)");
   at->add_option("--below-bound", o->below_bound, "Sample at this fraction of the proven bound (default 0.95)");
   at->require_option(0, 1);
   command->add_option("--seed", o->certify.seed, "Seed of the generated curves")->capture_default_str();

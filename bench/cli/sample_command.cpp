@@ -26,7 +26,7 @@ struct Sample_options {
 geometry::Sample draw(const Sample_options& o, const geometry::Local_feature_size& lfs) {
   const double floor = o.minimum_lfs.value_or(geometry::default_minimum_lfs(lfs));
   if (o.epsilon) return (o.safe ? geometry::safe_epsilon_sampling : geometry::epsilon_sampling)(lfs, *o.epsilon, floor);
-  if (o.rho) return geometry::rho_sampling(lfs, *o.rho, floor);
+  if (o.rho) return (o.safe ? geometry::safe_rho_sampling : geometry::rho_sampling)(lfs, *o.rho, floor);
   if (o.uniform) return geometry::uniform_sampling(lfs, *o.uniform);
   return geometry::random_sampling(lfs, *o.random, o.seed);
 }
@@ -65,7 +65,7 @@ void add_sample_command(CLI::App& app) {
   how->add_option("--uniform", o->uniform, "N points at equal arc-length steps");
   how->add_option("--random", o->random, "N points uniform in arc length (--seed)");
   how->require_option(1);
-  command->add_flag("--safe", o->safe, "with --epsilon: guarantee the measured epsilon stays below E");
+  command->add_flag("--safe", o->safe, "with --epsilon or --rho: guarantee the measured epsilon (rho) stays below it");
   command->add_flag("--crossing-samples", o->crossing_samples,
                     "a sample on every crossing, shared by both branches (degree 4 in the ground truth)");
   command->add_option("--min-lfs", o->minimum_lfs, "lfs floor near sharp points (default 1e-3 of the bbox diagonal)");

@@ -16,8 +16,8 @@ namespace {
 
 using Settings = std::map<std::string, double, std::less<>>;
 
-const std::string_view known_keys[] = {"epsilon", "walk",      "rho",      "uniform", "per-circle", "crossings",
-                                       "noise",   "lfs-noise", "outliers", "seed"};
+const std::string_view known_keys[] = {"epsilon", "walk",      "rho",      "uniform", "per-circle", "uniformity",
+                                       "crossings", "noise",   "lfs-noise", "outliers", "seed"};
 const std::string_view sampler_keys[] = {"epsilon", "walk", "rho", "uniform", "per-circle"};
 
 Settings parse_settings(std::string_view name) {
@@ -75,9 +75,13 @@ geometry::Sample drawn(const geometry::Local_feature_size& lfs, const Settings& 
   if (!chosen) throw std::invalid_argument("input " + std::string(name) + ": no sampler (epsilon=, uniform=, ...)");
   const std::string_view key = chosen;
   const double value = settings.find(key)->second, floor = geometry::default_minimum_lfs(lfs);
+  if (settings.contains("uniformity") && key != "epsilon")
+    throw std::invalid_argument("input " + std::string(name) + ": uniformity= grades an epsilon= sampling only");
+  if (key == "epsilon" && settings.contains("uniformity"))
+    return geometry::graded_epsilon_sampling(lfs, value, settings.find("uniformity")->second, floor);
   if (key == "epsilon") return geometry::safe_epsilon_sampling(lfs, value, floor);
   if (key == "walk") return geometry::epsilon_sampling(lfs, value, floor);
-  if (key == "rho") return geometry::rho_sampling(lfs, value, floor);
+  if (key == "rho") return geometry::safe_rho_sampling(lfs, value, floor);
   if (key == "uniform") return geometry::uniform_sampling(lfs, count_of(settings, key, name));
   const double per_circle = static_cast<double>(count_of(settings, key, name));
   if (per_circle < 1) throw std::invalid_argument("input " + std::string(name) + ": per-circle must be >= 1");
@@ -141,7 +145,7 @@ std::vector<Bench_input> make_bench_inputs(std::span<const std::string> names) {
     const std::vector<Point> points = geometry::read_point_file(resolve_data_path(source.substr(5))).points;
     for (const std::string& name : names) {
       const Settings settings = parse_settings(name);
-      for (const std::string_view key : {"epsilon", "walk", "rho", "uniform", "per-circle", "crossings", "lfs-noise"})
+      for (const std::string_view key : {"epsilon", "walk", "rho", "uniform", "per-circle", "uniformity", "crossings", "lfs-noise"})
         if (settings.contains(key))
           throw std::invalid_argument("input " + name + ": a point file takes no " + std::string(key));
       geometry::Sample sample;

@@ -9,11 +9,13 @@
 // truth. A curve takes exactly one sampler key:
 //   epsilon=E     safe epsilon-sampling: measured epsilon <= E (geometry/sampling/sampling.h)
 //   walk=E        the survey's greedy walk at E (measures about E / 2 on smooth curves)
-//   rho=R         HNN-Crust's rho-sampling
+//   rho=R         HNN-Crust's rho-sampling, safe: measured rho <= R (safe_rho_sampling)
 //   uniform=N     N points at equal arc-length steps
 //   per-circle=N  equal arc-length steps of 2 pi / N: N points per unit circle (the
 //                 survey's sharp-corner family; the first sample is the corner)
 // and optionally
+//   uniformity=U  with epsilon=: graded until every point's longer / shorter chord is
+//                 below U (Connect2D's local uniformity; graded_epsilon_sampling)
 //   crossings=1   a sample at every crossing, shared by both branches (degree 4 in the
 //                 ground truth; geometry/sampling/sampling.h, with_crossing_samples)
 // and any of these perturbations, applied in this order (a file takes noise and outliers):

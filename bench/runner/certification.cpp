@@ -27,11 +27,25 @@ std::string fourier_source(std::uint64_t seed, int harmonics, int components = 1
          (components > 1 ? ",components=" + std::to_string(components) : "");
 }
 
+Column measured_column(const certify::Theorem& theorem) {
+  return theorem.measure == certify::Measure::rho ? Column::rho : Column::epsilon;
+}
+
 // The verdict of one finished row.
 Verdict verdict_of(const certify::Theorem& theorem, const Result_row& row) {
   const auto measured = [&row](Column column) { return row[column].empty() ? INFINITY : std::stod(row[column]); };
-  return certify::classify(theorem, measured(Column::epsilon), row[Column::status] == "ok" && row[Column::exact] == "1",
-                           measured(Column::uniformity));
+  return certify::classify(theorem, measured(measured_column(theorem)),
+                           row[Column::status] == "ok" && row[Column::exact] == "1", measured(Column::uniformity));
+}
+
+// The sampler keys of a case at `level` (bench_input.h): epsilon= or rho=, and for a
+// theorem that also bounds local uniformity, uniformity= at that bound, so that every case
+// meets both hypotheses on purpose (the 1e-3 margins are the samplers').
+std::string sampling_keys(const certify::Theorem& theorem, double level) {
+  std::string keys(1, '|');
+  keys.append(certify::measure_name(theorem.measure)).append("=").append(format_number(level));
+  if (theorem.uniformity_below) keys += "|uniformity=" + format_number(*theorem.uniformity_below);
+  return keys;
 }
 
 // Runs `algorithm` on one input in a scratch directory: its row.
@@ -59,28 +73,30 @@ std::string with_value(const std::string& source, const std::string& key, std::o
   return source.substr(0, at) + (value ? "," + key + "=" + std::to_string(*value) : "") + source.substr(end);
 }
 
-// Simpler inputs than `input`, simplest first: a circle at the same epsilon, one
-// component fewer, one harmonic fewer, then a coarser sampling (fewer points) half-way to
-// the bound.
-std::vector<std::string> simpler_inputs(const std::string& input, double epsilon, double bound) {
+// Simpler inputs than `input` (sampled at `level` of the theorem's measure), simplest
+// first: a circle at the same level, one component fewer, one harmonic fewer, then a
+// coarser sampling (fewer points) half-way to the bound.
+std::vector<std::string> simpler_inputs(const std::string& input, const certify::Theorem& theorem, double level) {
   const std::string source(input_source(input));
   std::vector<std::string> simpler;
-  const auto at = [](const std::string& s, double e) { return s + "|epsilon=" + format_number(e); };
-  if (!source.starts_with("circle:")) simpler.push_back(at("circle:r=1", epsilon));
+  const auto at = [&](const std::string& s, double l) { return s + sampling_keys(theorem, l); };
+  if (!source.starts_with("circle:")) simpler.push_back(at("circle:r=1", level));
   if (source.starts_with("fourier:")) {
     if (const auto components = value_of(source, "components"); components && *components > 1)
-      simpler.push_back(at(with_value(source, "components", *components > 2 ? std::optional(*components - 1) : std::nullopt), epsilon));
+      simpler.push_back(at(with_value(source, "components", *components > 2 ? std::optional(*components - 1) : std::nullopt), level));
     if (const auto harmonics = value_of(source, "harmonics"); harmonics && *harmonics > 0)
-      simpler.push_back(at(with_value(source, "harmonics", *harmonics - 1), epsilon));
+      simpler.push_back(at(with_value(source, "harmonics", *harmonics - 1), level));
   }
-  const double coarser = epsilon + (0.99 * bound - epsilon) / 2;
-  if (coarser - epsilon > 1e-3 * bound) simpler.push_back(at(source, coarser));
+  const double coarser = level + (0.99 * theorem.bound - level) / 2;
+  if (coarser - level > 1e-3 * theorem.bound) simpler.push_back(at(source, coarser));
   return simpler;
 }
 
-double epsilon_setting(const std::string& input) {
-  const auto at = input.rfind("|epsilon=");
-  return std::stod(input.substr(at + 9));
+// The level an input was sampled at: the value of its epsilon= or rho= key.
+double level_of(const std::string& input, const certify::Theorem& theorem) {
+  std::string key(1, '|');
+  key.append(certify::measure_name(theorem.measure)).push_back('=');
+  return std::stod(input.substr(input.rfind(key) + key.size()));
 }
 
 // Greedy shrinking: take the first simpler input that still fails under a verified
@@ -90,7 +106,7 @@ Counterexample shrink(const algorithms::Algorithm& algorithm, const certify::The
   const std::filesystem::path scratch = directory / "shrinking";
   for (bool smaller = true; smaller;) {
     smaller = false;
-    for (const std::string& candidate : simpler_inputs(input, epsilon_setting(input), theorem.epsilon_below)) {
+    for (const std::string& candidate : simpler_inputs(input, theorem, level_of(input, theorem))) {
       const Result_row row = run_one(algorithm, candidate, options, scratch, Pictures::none);
       if (verdict_of(theorem, row) == Verdict::failure) {
         input = candidate, smaller = true;
@@ -107,25 +123,35 @@ Counterexample shrink(const algorithms::Algorithm& algorithm, const certify::The
   geometry::write_points(directory / "points.xy", made.points);
   geometry::write_edges(directory / "truth.edges", *made.truth);
   std::ofstream replay(directory / "replay.sh");
+  const std::string_view measure = certify::measure_name(theorem.measure);
   replay << "#!/bin/sh\n# " << algorithm.name << " does not reconstruct " << input << "\n# (" << made.points.size()
-         << " points, measured epsilon " << row[Column::epsilon] << " < " << theorem.epsilon_below
+         << " points, measured " << measure << " " << row[measured_column(theorem)] << " < " << theorem.bound
          << "). Run from this directory with curvebench on PATH.\n"
          << "curvebench reconstruct " << replay_arguments(algorithm)
          << " -i points.xy -o reconstruction.edges --svg reconstruction.svg\n"
          << "curvebench evaluate -i points.xy -e reconstruction.edges -g truth.edges\n";
-  return {input, made.points.size(), std::stod(row[Column::epsilon]), directory};
+  return {input, made.points.size(), std::stod(row[measured_column(theorem)]), directory};
 }
 
 }  // namespace
 
-std::vector<Suite_case> certification_cases(const Certify_options& options, double epsilon) {
+std::vector<Suite_case> certification_cases(const Certify_options& options, const certify::Theorem& theorem, double level) {
   std::vector<std::string> sources;
-  if (options.curves == "fourier") {
-    for (std::size_t i = 0; i < options.count; ++i)
-      sources.push_back(fourier_source((options.seed << 32) + i, 1 + static_cast<int>(i % 8)));
-  } else if (options.curves == "multi") {
-    for (std::size_t i = 0; i < options.count; ++i)
-      sources.push_back(fourier_source((options.seed << 32) + 3 * i, 1 + static_cast<int>(i % 8), 2 + static_cast<int>(i % 2)));
+  const std::uint64_t base = options.seed << 32;
+  // The smooth generated families of the benchmark: one closed curve, two side by side,
+  // one inside another (a hole), and a star with every corner rounded.
+  const auto generated = [&](const std::string& family, std::size_t i) {
+    const int harmonics = 1 + static_cast<int>(i % 8);
+    if (family == "fourier") return fourier_source(base + i, harmonics);
+    if (family == "multi") return fourier_source(base + 3 * i, harmonics, 2 + static_cast<int>(i % 2));
+    if (family == "nested") return "nested:seed=" + std::to_string(base + i) + ",separation=0.1";
+    return "star:seed=" + std::to_string(base + i) + ",angle=" + std::to_string(30 + 30 * (i % 3)) + ",rounding=0.05";
+  };
+  const std::vector<std::string> families{"fourier", "multi", "nested", "rounded"};
+  if (std::ranges::find(families, options.curves) != families.end()) {
+    for (std::size_t i = 0; i < options.count; ++i) sources.push_back(generated(options.curves, i));
+  } else if (options.curves == "mixed") {
+    for (std::size_t i = 0; i < options.count; ++i) sources.push_back(generated(families[i % families.size()], i / families.size()));
   } else if (options.curves == "svg" || options.curves == "glyphs") {
     std::vector<std::string> all;
     if (options.curves == "glyphs") {
@@ -138,27 +164,28 @@ std::vector<Suite_case> certification_cases(const Certify_options& options, doub
     const std::size_t step = std::max<std::size_t>(1, all.size() / std::max<std::size_t>(options.count, 1));
     for (std::size_t i = 0; i < all.size() && sources.size() < options.count; i += step) sources.push_back(all[i]);
   } else {
-    throw std::invalid_argument("--curves must be fourier, multi, svg or glyphs, not '" + options.curves + "'");
+    throw std::invalid_argument("--curves must be fourier, multi, nested, rounded, mixed, svg or glyphs, not '" +
+                                options.curves + "'");
   }
   std::vector<Suite_case> cases;
-  for (const std::string& source : sources)
-    cases.push_back({std::string(suite_name), source + "|epsilon=" + format_number(epsilon), ""});
+  for (const std::string& source : sources) cases.push_back({std::string(suite_name), source + sampling_keys(theorem, level), ""});
   return cases;
 }
 
 Certify_summary certify_algorithm(const algorithms::Algorithm& algorithm, const Certify_options& options) {
-  const auto theorem = certify::theorem_of(algorithm);
-  if (!theorem) throw std::invalid_argument(std::string(algorithm.name) + " has no proven epsilon bound to certify");
-  const double epsilon = options.epsilon.value_or(options.below_bound * theorem->epsilon_below);
-  if (!(epsilon > 0)) throw std::invalid_argument("the epsilon to sample at must be positive");
+  const auto theorem = certify::theorem_of(algorithm, options.measure);
+  const std::string measure(certify::measure_name(options.measure));
+  if (!theorem) throw std::invalid_argument(std::string(algorithm.name) + " has no proven " + measure + " bound to certify");
+  const double level = options.level.value_or(options.below_bound * theorem->bound);
+  if (!(level > 0)) throw std::invalid_argument("the " + measure + " to sample at must be positive");
 
   Run_options run = options.run;
   run.report = false;
   if (!run.resume) std::filesystem::remove_all(run.output);
-  run_cases(certification_cases(options, epsilon), {&algorithm}, run);
+  run_cases(certification_cases(options, *theorem, level), {&algorithm}, run);
 
-  Certify_summary summary{.algorithm = std::string(algorithm.name), .bound = theorem->epsilon_below,
-                          .requested_epsilon = epsilon};
+  Certify_summary summary{.algorithm = std::string(algorithm.name), .measure = options.measure, .bound = theorem->bound,
+                          .requested_level = level};
   for (const Result_row& row : read_results_csv(run.output / "results.csv")) {
     ++summary.cases;
     switch (verdict_of(*theorem, row)) {

@@ -1,5 +1,6 @@
 // `curvebench certify`: a sampling-condition theorem (certify/theorems.h) as an experiment.
-// Generated curves are sampled so that the *measured* epsilon lies below the bound, each
+// Generated curves are sampled so that the *measured* epsilon (or rho, for a theorem on
+// rho; and local uniformity, for one that bounds it too) lies below the bound, each
 // case is reconstructed as a job of the benchmark runner (run.h: parallel, resumable,
 // shardable), and each is classified: passed, failure (a bug or a counterexample),
 // inconclusive (within the lfs estimate's error of the bound) or hypothesis violation (the
@@ -9,7 +10,11 @@
 //
 // Every case is reproducible from (curves, index, seed): case i of `fourier` is the
 // input `fourier:seed=SEED*2^32+i,harmonics=1+i%8|epsilon=E`, of `multi` the input
-// `fourier:seed=SEED*2^32+3i,harmonics=1+i%8,components=2+i%2|epsilon=E`.
+// `fourier:seed=SEED*2^32+3i,harmonics=1+i%8,components=2+i%2|epsilon=E`, of `nested`
+// `nested:seed=SEED*2^32+i,separation=0.1|...`, of `rounded`
+// `star:seed=SEED*2^32+i,angle=30+30(i%3),rounding=0.05|...`; `mixed` takes case i/4 of
+// the four in turn. A rho theorem samples with `rho=R` (safe_rho_sampling), Connect2D's
+// with `epsilon=E|uniformity=1.609` (graded_epsilon_sampling).
 #pragma once
 
 #include <filesystem>
@@ -19,13 +24,18 @@
 
 #include "algorithms/algorithm.h"
 #include "bench/runner/run.h"
+#include "certify/theorems.h"
 
 namespace curvebench::bench {
 
 struct Certify_options {
-  std::string curves = "fourier";  // fourier (random smooth closed curves), multi (2 or 3 of them), svg (the bundled drawings), glyphs
+  // fourier (random smooth closed curves), multi (2 or 3 of them side by side), nested (one
+  // inside another), rounded (star polygons with every corner rounded), mixed (the four in
+  // turn), svg (the bundled drawings), glyphs
+  std::string curves = "fourier";
   std::size_t count = 100;
-  std::optional<double> epsilon;   // sample at this epsilon, else at below_bound x the bound
+  certify::Measure measure = certify::Measure::epsilon;  // which theorem: on epsilon or on rho
+  std::optional<double> level;     // sample at this epsilon (rho), else at below_bound x the bound
   double below_bound = 0.95;
   std::uint64_t seed = 0;
   Run_options run;                 // output directory, workers, shard, resume, time limit
@@ -34,21 +44,23 @@ struct Certify_options {
 struct Counterexample {
   std::string input;  // the shrunk input's name: it makes the sampling again
   std::size_t points = 0;
-  double epsilon = 0;  // measured
+  double measured = 0;  // its epsilon (rho)
   std::filesystem::path directory;  // points.xy, truth.edges, the run's picture, replay.sh
 };
 
 struct Certify_summary {
   std::string algorithm;
-  double bound = 0, requested_epsilon = 0;
+  certify::Measure measure = certify::Measure::epsilon;
+  double bound = 0, requested_level = 0;
   std::size_t cases = 0, passed = 0, failures = 0, inconclusive = 0, hypothesis_violations = 0;
   std::vector<Counterexample> counterexamples = {};  // the first five failures, shrunk
 };
 
-// The cases of a certification: input names of the benchmark runner (bench_input.h).
-std::vector<Suite_case> certification_cases(const Certify_options& options, double epsilon);
+// The cases of a certification: input names of the benchmark runner (bench_input.h),
+// sampled at `level` of the theorem's measure (and its uniformity bound, if it has one).
+std::vector<Suite_case> certification_cases(const Certify_options& options, const certify::Theorem& theorem, double level);
 
-// Throws std::invalid_argument if `algorithm` has no epsilon bound or the options are bad.
+// Throws std::invalid_argument if `algorithm` has no bound on options.measure or the options are bad.
 // Writes options.run.output anew unless options.run.resume.
 Certify_summary certify_algorithm(const algorithms::Algorithm& algorithm, const Certify_options& options);
 

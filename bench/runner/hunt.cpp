@@ -333,7 +333,7 @@ std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const 
       std::vector<Edge> wrong, missing;
       std::ranges::set_difference(first.edges, *made_case.truth, std::back_inserter(wrong));
       std::ranges::set_difference(*made_case.truth, first.edges, std::back_inserter(missing));
-      std::string message = "measured epsilon " + format_number(epsilon) + " < " + format_number(theorem->epsilon_below) +
+      std::string message = "measured epsilon " + format_number(epsilon) + " < " + format_number(theorem->bound) +
                             ", yet not exact:";
       if (!wrong.empty()) message += " " + std::to_string(wrong.size()) + " wrong edges (" + describe(wrong) + ")";
       if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + describe(missing) + ")";
@@ -398,9 +398,13 @@ Hunt_summary hunt(const Hunt_options& options) {
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   Hunt_summary summary;
   std::map<std::string, std::size_t> found;  // per kind
-  const rc::Gen<Hunt_case> generator = hunt_cases(theorem ? std::optional(theorem->epsilon_below) : std::nullopt);
-  const auto defect_of = [&](const Hunt_case& c, Made_case& made_case) {
-    made_case = made(c);
+  const rc::Gen<Hunt_case> generator = hunt_cases(theorem ? std::optional(theorem->bound) : std::nullopt);
+  const auto defect_of = [&](const Hunt_case& c, Made_case& made_case) -> std::optional<Defect> {
+    try {
+      made_case = made(c);
+    } catch (const std::exception&) {
+      return std::nullopt;  // a curve the sampler cannot sample: no case, and no defect of the algorithm
+    }
     return find_defect(*algorithm, made_case, options.case_timeout, theorem);
   };
   for (std::uint64_t i = 0; elapsed() < options.seconds; ++i) {

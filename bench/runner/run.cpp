@@ -225,7 +225,7 @@ void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> row
   std::ofstream theorems(dir / "theorems.csv");
   theorems << "algorithm,epsilon_below\n";
   for (const certify::Theorem& theorem : certify::theorems())
-    theorems << theorem.algorithm->name << ',' << format_number(theorem.epsilon_below) << '\n';
+    theorems << theorem.algorithm->name << ',' << format_number(theorem.bound) << '\n';
   theorems.close();
   if (report) make_report(dir);
 }

@@ -266,6 +266,143 @@ void cover(const Local_feature_size& lfs, std::size_t c, double u, double v, dou
   cover(lfs, c, worst.parameter, v, target, minimum_lfs, out);
 }
 
+std::vector<std::vector<double>> safe_epsilon_parameters(const Local_feature_size& lfs, double epsilon,
+                                                         double minimum_lfs) {
+  check_walk_arguments("safe epsilon sampling", epsilon, minimum_lfs);
+  const auto walked = walk_curve(
+      lfs, [&](std::size_t c) { return Coverage_step(lfs, c, epsilon * (1 - safe_margin), minimum_lfs); });
+  std::vector<std::vector<double>> covered;
+  for (std::size_t c = 0; c < walked.size(); ++c) {
+    const Curve_component& component = lfs.curve().components[c];
+    const std::vector<double>& s = walked[c];
+    auto& parameters = covered.emplace_back();
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) cover(lfs, c, s[i], s[i + 1], epsilon, minimum_lfs, parameters);
+    if (component.closed())
+      cover(lfs, c, s.back(), s.front() + piece_count(component), epsilon, minimum_lfs, parameters);
+    else
+      parameters.push_back(s.back());
+  }
+  return covered;
+}
+
+// The interval [u, v]'s rho, as certify measures it: half its chord against its reach (the
+// least lfs over it, floored), searched along the curve (curve_search.h).
+double interval_rho(const Local_feature_size& lfs, std::size_t c, double u, double v, double minimum_lfs) {
+  const Curve_component& component = lfs.curve().components[c];
+  const Curve_maximum lowest =
+      maximize_along(lfs, c, u, v, [&](double s) { return -std::max(lfs.at(c, s), minimum_lfs); });
+  return relative_distance(distance(component.point(u), component.point(v)) / 2, -lowest.value, 0);
+}
+
+// Splits [u, v] in the middle (of its parameter) until each part's rho is within the
+// target; appends u and the split points.
+void cover_rho(const Local_feature_size& lfs, std::size_t c, double u, double v, double target, double minimum_lfs,
+               std::vector<double>& out) {
+  const double middle = u + (v - u) / 2;
+  if (interval_rho(lfs, c, u, v, minimum_lfs) <= target * (1 - safe_margin) || !(middle > u && middle < v)) {
+    out.push_back(u);
+    return;
+  }
+  cover_rho(lfs, c, u, middle, target, minimum_lfs, out);
+  cover_rho(lfs, c, middle, v, target, minimum_lfs, out);
+}
+
+// The worst epsilon of the intervals between adjacent samples (each searched as `cover`
+// searches one).
+double worst_epsilon(const Local_feature_size& lfs, std::size_t c, const std::vector<double>& parameters,
+                     double minimum_lfs) {
+  const Curve_component& component = lfs.curve().components[c];
+  double worst = 0;
+  const std::size_t intervals = component.closed() ? parameters.size() : parameters.size() - 1;
+  for (std::size_t i = 0; i < intervals; ++i) {
+    const double u = parameters[i], v = i + 1 < parameters.size() ? parameters[i + 1] : parameters[0] + piece_count(component);
+    const Point pu = component.point(u), pv = component.point(v);
+    worst = std::max(worst, maximize_along(lfs, c, u, v, [&](double s) {
+                              const Point p = component.point(s);
+                              return relative_distance(std::min(distance(p, pu), distance(p, pv)), lfs.at(c, s), minimum_lfs);
+                            }).value);
+  }
+  return worst;
+}
+
+// The largest ratio of adjacent chords at a point of two chords.
+double worst_uniformity(const Curve_component& component, const std::vector<double>& parameters) {
+  std::vector<double> chord;
+  const std::size_t n = parameters.size(), chords = component.closed() ? n : n - 1;
+  for (std::size_t e = 0; e < chords; ++e) chord.push_back(distance(component.point(parameters[e]), component.point(parameters[(e + 1) % n])));
+  double worst = 1;
+  for (std::size_t i = component.closed() ? 0 : 1; i < (component.closed() ? n : n - 1); ++i) {
+    const double a = chord[i > 0 ? i - 1 : chords - 1], b = chord[i];
+    worst = std::max(worst, std::min(a, b) > 0 ? std::max(a, b) / std::min(a, b) : std::numeric_limits<double>::infinity());
+  }
+  return worst;
+}
+
+// One smooth component sampled by a size field: samples where the integral of
+// 1 / (scale h) along the arc length passes equal steps, h(a) = min over b of
+// lfs(b) + slope |a - b| (the envelope of lfs of that slope, on the dense lfs grid). The
+// spacing follows scale h, which changes by at most slope x scale over one spacing, so
+// adjacent chords differ by about that factor (lfs itself is 1-Lipschitz: slope 1 is lfs).
+std::vector<double> size_field_samples(const Local_feature_size& lfs, std::size_t c, double scale, double slope,
+                                       double minimum_lfs) {
+  const Curve_component& component = lfs.curve().components[c];
+  const bool closed = component.closed();
+  const std::vector<double> grid = lfs.grid(c, 0, piece_count(component), 8);
+  const std::size_t m = grid.size();
+  std::vector<double> arc(m), h(m);
+  for (std::size_t k = 0; k < m; ++k) arc[k] = k + 1 < m ? component.arc_length(grid[k]) : component.length();
+  for (std::size_t k = 0; k < m; ++k) h[k] = std::max(lfs.at(c, std::min(grid[k], piece_count(component))), minimum_lfs);
+  // The envelope by sweeps forward and back (twice round a closed component, for the wrap).
+  for (int round = 0; round < (closed ? 2 : 1); ++round) {
+    for (std::size_t k = 1; k < m; ++k) h[k] = std::min(h[k], h[k - 1] + slope * (arc[k] - arc[k - 1]));
+    if (closed) h[0] = std::min(h[0], h[m - 1]);
+    for (std::size_t k = m - 1; k > 0; --k) h[k - 1] = std::min(h[k - 1], h[k] + slope * (arc[k] - arc[k - 1]));
+    if (closed) h[m - 1] = std::min(h[m - 1], h[0]);
+  }
+  std::vector<double> integral(m, 0);  // of 1 / (scale h), by trapezoids
+  for (std::size_t k = 1; k < m; ++k)
+    integral[k] = integral[k - 1] + (arc[k] - arc[k - 1]) * (1 / h[k] + 1 / h[k - 1]) / (2 * scale);
+  const double total = integral.back();
+  const std::size_t steps = std::max<std::size_t>(closed ? 3 : 1, static_cast<std::size_t>(std::ceil(total)));
+  std::vector<double> parameters;
+  std::size_t k = 1;
+  for (std::size_t j = 0; j < (closed ? steps : steps + 1); ++j) {
+    const double target = total * static_cast<double>(j) / static_cast<double>(steps);
+    while (k + 1 < m && integral[k] < target) ++k;
+    const double t = integral[k] > integral[k - 1] ? std::clamp((target - integral[k - 1]) / (integral[k] - integral[k - 1]), 0.0, 1.0) : 0;
+    parameters.push_back(j == 0 ? 0.0 : j == steps ? piece_count(component) : grid[k - 1] + t * (grid[k] - grid[k - 1]));
+  }
+  return parameters;
+}
+
+// The sampling of one smooth component by a size field whose scale is searched (by
+// bisection) for the sparsest sampling of epsilon at most `epsilon` and, with `slope`
+// halved while needed, local uniformity below `uniformity`.
+std::vector<double> graded_samples(const Local_feature_size& lfs, std::size_t c, double epsilon, double uniformity,
+                                   double minimum_lfs) {
+  const Curve_component& component = lfs.curve().components[c];
+  for (double slope = 1; slope > 1e-3; slope /= 2) {
+    // A chord of scale x lfs has its middle about scale / 2 lfs from both ends: start there.
+    double low = 0, high = 4 * epsilon;
+    std::vector<double> best;
+    for (int step = 0; step < 12; ++step) {
+      const double scale = best.empty() && step == 0 ? 2 * epsilon : low + (high - low) / 2;
+      std::vector<double> parameters = size_field_samples(lfs, c, scale, slope, minimum_lfs);
+      if (worst_epsilon(lfs, c, parameters, minimum_lfs) <= epsilon * (1 - safe_margin)) {
+        low = scale;
+        best = std::move(parameters);
+      } else {
+        high = scale;
+      }
+    }
+    if (best.empty()) best = size_field_samples(lfs, c, low > 0 ? low : epsilon / 8, slope, minimum_lfs);
+    if (worst_uniformity(component, best) < uniformity * (1 - safe_margin) &&
+        worst_epsilon(lfs, c, best, minimum_lfs) <= epsilon * (1 - safe_margin))
+      return best;
+  }
+  throw std::invalid_argument("graded epsilon sampling: no sampling meets both bounds");
+}
+
 // n points along one component at equal arc-length steps (both ends if it is open).
 std::vector<double> equal_steps(const Curve_component& component, std::size_t k) {
   std::vector<double> parameters;
@@ -294,26 +431,44 @@ Sample epsilon_sampling(const Local_feature_size& lfs, double epsilon, double mi
 }
 
 Sample safe_epsilon_sampling(const Local_feature_size& lfs, double epsilon, double minimum_lfs) {
-  check_walk_arguments("safe epsilon sampling", epsilon, minimum_lfs);
-  const auto walked = walk_curve(
-      lfs, [&](std::size_t c) { return Coverage_step(lfs, c, epsilon * (1 - safe_margin), minimum_lfs); });
-  std::vector<std::vector<double>> covered;
-  for (std::size_t c = 0; c < walked.size(); ++c) {
-    const Curve_component& component = lfs.curve().components[c];
-    const std::vector<double>& s = walked[c];
-    auto& parameters = covered.emplace_back();
-    for (std::size_t i = 0; i + 1 < s.size(); ++i) cover(lfs, c, s[i], s[i + 1], epsilon, minimum_lfs, parameters);
-    if (component.closed())
-      cover(lfs, c, s.back(), s.front() + piece_count(component), epsilon, minimum_lfs, parameters);
-    else
-      parameters.push_back(s.back());
+  return assemble(lfs, safe_epsilon_parameters(lfs, epsilon, minimum_lfs), minimum_lfs);
+}
+
+Sample graded_epsilon_sampling(const Local_feature_size& lfs, double epsilon, double uniformity, double minimum_lfs) {
+  check_walk_arguments("graded epsilon sampling", epsilon, minimum_lfs);
+  if (!(uniformity > 1 && std::isfinite(uniformity)))
+    throw std::invalid_argument("graded epsilon sampling: the uniformity bound must be finite and above 1");
+  std::vector<std::vector<double>> parameters;
+  for (std::size_t c = 0; c < lfs.curve().components.size(); ++c) {
+    if (!lfs.curve().components[c].corners().empty())
+      throw std::invalid_argument("graded epsilon sampling: smooth curves only (component " + std::to_string(c) +
+                                  " has a corner)");
+    parameters.push_back(graded_samples(lfs, c, epsilon, uniformity, minimum_lfs));
   }
-  return assemble(lfs, covered, minimum_lfs);
+  return assemble(lfs, parameters, minimum_lfs);
 }
 
 Sample rho_sampling(const Local_feature_size& lfs, double rho, double minimum_lfs) {
   check_walk_arguments("rho sampling", rho, minimum_lfs);
   return assemble(lfs, walk_curve(lfs, [&](std::size_t c) { return Rho_step(lfs, c, rho, minimum_lfs); }), minimum_lfs);
+}
+
+Sample safe_rho_sampling(const Local_feature_size& lfs, double rho, double minimum_lfs) {
+  check_walk_arguments("safe rho sampling", rho, minimum_lfs);
+  const auto walked =
+      walk_curve(lfs, [&](std::size_t c) { return Rho_step(lfs, c, rho * (1 - safe_margin), minimum_lfs); });
+  std::vector<std::vector<double>> covered;
+  for (std::size_t c = 0; c < walked.size(); ++c) {
+    const Curve_component& component = lfs.curve().components[c];
+    const std::vector<double>& s = walked[c];
+    auto& parameters = covered.emplace_back();
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) cover_rho(lfs, c, s[i], s[i + 1], rho, minimum_lfs, parameters);
+    if (component.closed())
+      cover_rho(lfs, c, s.back(), s.front() + piece_count(component), rho, minimum_lfs, parameters);
+    else
+      parameters.push_back(s.back());
+  }
+  return assemble(lfs, covered, minimum_lfs);
 }
 
 Sample with_crossing_samples(const Local_feature_size& lfs, Sample sample) {

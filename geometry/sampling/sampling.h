@@ -44,6 +44,16 @@ Sample epsilon_sampling(const Local_feature_size& lfs, double epsilon, double mi
 // epsilon (1e-3 margin). Measured: within 5% below the target (certify_test).
 Sample safe_epsilon_sampling(const Local_feature_size& lfs, double epsilon, double minimum_lfs);
 
+// Connect2D's two hypotheses at once (Ohrhallinger, Mudur 2013: epsilon < 1/2 and local
+// uniformity u < 1.609, u = the longer / shorter chord at a point): samples spaced by a
+// size field, scale x the envelope of lfs of some slope, placed by equidistributing the
+// integral of 1 / size along the arc length, so that adjacent chords differ little. The
+// scale is searched (bisection, 12 steps) for the sparsest sampling whose epsilon,
+// searched as safe_epsilon_sampling verifies it, is at most epsilon; the slope is halved
+// while u is not below `uniformity` (both with a 1e-3 margin). Smooth curves only: throws
+// std::invalid_argument for a corner, a bad bound, or no sampling that meets both.
+Sample graded_epsilon_sampling(const Local_feature_size& lfs, double epsilon, double uniformity, double minimum_lfs);
+
 // HNN-Crust's rho-sampling (Ohrhallinger, Mitchell, Wimmer 2016). The reach of a curve
 // interval I is inf { lfs(p) : p in I }; the interval between adjacent samples s_i, s_{i+1}
 // is rho-sampled if half its chord is below rho times its reach,
@@ -54,6 +64,11 @@ Sample safe_epsilon_sampling(const Local_feature_size& lfs, double epsilon, doub
 // 1-Lipschitz, so an epsilon-sampling has half-chords below epsilon (reach + half-chord).)
 // Greedy walk as above with this condition, reach floored at minimum_lfs.
 Sample rho_sampling(const Local_feature_size& lfs, double rho, double minimum_lfs);
+
+// A sampling whose measured rho (certify/sampling_measure.h) is at most rho: the walk at
+// rho (1 - 1e-3), then each interval, its reach searched along the curve as the measure
+// does, halved while its rho exceeds rho (1 - 1e-3).
+Sample safe_rho_sampling(const Local_feature_size& lfs, double rho, double minimum_lfs);
 
 // n points at equal arc-length steps: each component gets its share of n by length
 // (largest remainders; at least 1 for a closed component, 2 for an open one), a closed

@@ -201,7 +201,7 @@ TEST(AlgorithmFile, CertifyChecksTheClaimedCondition) {
   testing::TemporaryDirectory dir;
   const algorithms::Algorithm& faithful = *load(dir, nn_crust_file(false, "wrapped-nn-crust")).front();
   Certify_options options;
-  options.count = 12, options.epsilon = 0.15;
+  options.count = 12, options.level = 0.15;
   options.run.output = dir.path() / "faithful", options.run.jobs = 2, options.run.progress = false;
   const Certify_summary passed = certify_algorithm(faithful, options);
   EXPECT_EQ(passed.cases, 12u);

@@ -26,24 +26,30 @@ TEST(Theorems, ComeFromTheRegistryWithTheirBounds) {
   const std::vector<certify::Theorem> all = certify::theorems();
   ASSERT_FALSE(all.empty());
   for (const certify::Theorem& t : all) {
-    EXPECT_EQ(t.epsilon_below, *t.algorithm->condition.epsilon_below);
+    EXPECT_EQ(t.measure, certify::Measure::epsilon);
+    EXPECT_EQ(t.bound, *t.algorithm->condition.epsilon_below);
     EXPECT_EQ(t.uniformity_below, t.algorithm->condition.uniformity_below);
   }
   const auto nn = certify::theorem_of(*algorithms::find_algorithm("nn-crust"));
   ASSERT_TRUE(nn);
-  EXPECT_EQ(nn->epsilon_below, 1.0 / 3);
+  EXPECT_EQ(nn->bound, 1.0 / 3);
   EXPECT_FALSE(certify::theorem_of(*algorithms::find_algorithm("emst")));  // no epsilon bound
+  // HNN-Crust's headline theorem is on rho; NN-Crust has none.
+  const auto hnn = certify::theorem_of(*algorithms::find_algorithm("hnn-crust"), certify::Measure::rho);
+  ASSERT_TRUE(hnn);
+  EXPECT_EQ(hnn->bound, 0.9);
+  EXPECT_FALSE(certify::theorem_of(*algorithms::find_algorithm("nn-crust"), certify::Measure::rho));
 }
 
 TEST(Theorems, VerdictsSeparateTheHypothesisFromTheAlgorithm) {
-  const certify::Theorem t{algorithms::find_algorithm("nn-crust"), 0.3};
+  const certify::Theorem t{algorithms::find_algorithm("nn-crust"), certify::Measure::epsilon, 0.3};
   EXPECT_EQ(certify::classify(t, 0.2, true), Verdict::passed);
   EXPECT_EQ(certify::classify(t, 0.2, false), Verdict::failure);
   EXPECT_EQ(certify::classify(t, 0.2999, false), Verdict::inconclusive);  // within 1e-3 of the bound
   EXPECT_EQ(certify::classify(t, 0.3, false), Verdict::hypothesis_violation);
   EXPECT_EQ(certify::classify(t, INFINITY, true), Verdict::hypothesis_violation);
   // A uniformity bound (Connect2D's u < 1.609) is a second hypothesis; without one, u is not read.
-  const certify::Theorem uniform{t.algorithm, 0.5, 1.609};
+  const certify::Theorem uniform{t.algorithm, certify::Measure::epsilon, 0.5, 1.609};
   EXPECT_EQ(certify::classify(uniform, 0.4, false, 1.5), Verdict::failure);
   EXPECT_EQ(certify::classify(uniform, 0.4, false, 15.4), Verdict::hypothesis_violation);
   EXPECT_EQ(certify::classify(uniform, 0.4, true, INFINITY), Verdict::hypothesis_violation);
@@ -67,7 +73,7 @@ TEST(Certify, NnCrustBelowOneThirdHasNoFailure) {
   EXPECT_EQ(s.failures, 0u);
   EXPECT_EQ(s.hypothesis_violations, 0u);  // the safe sampler keeps the measured epsilon below
   EXPECT_EQ(s.passed + s.inconclusive, 40u);
-  EXPECT_NEAR(s.requested_epsilon, 0.3, 1e-12);
+  EXPECT_NEAR(s.requested_level, 0.3, 1e-12);
 }
 
 // NN-Crust that drops its last edge whenever the number of points is odd: a bug the
@@ -88,7 +94,7 @@ TEST(Certify, CatchesAndShrinksABrokenAlgorithm) {
     EXPECT_TRUE(c.input.starts_with("circle:")) << c.input;
     EXPECT_LE(c.points, 12u) << c.input;
     EXPECT_EQ(c.points % 2, 1u);
-    EXPECT_LT(c.epsilon, 1.0 / 3);
+    EXPECT_LT(c.measured, 1.0 / 3);
     // Self-contained: the points and ground truth on disk, the failing run's row and
     // picture, and the replay script.
     const auto points = geometry::read_point_file(c.directory / "points.xy").points;
@@ -129,8 +135,60 @@ TEST(Certify, ShrinksAMultiComponentFailureToTwoComponents) {
   for (const Counterexample& c : s.counterexamples) {
     EXPECT_NE(c.input.find(",harmonics=0,"), std::string::npos) << c.input;
     EXPECT_NE(c.input.find(",components=2|"), std::string::npos) << c.input;
-    EXPECT_LT(c.epsilon, 1.0 / 3);
+    EXPECT_LT(c.measured, 1.0 / 3);
   }
+}
+
+// HNN-Crust's headline theorem, rho < 0.9: every case sampled at 0.95 of it meets the
+// hypothesis on purpose (safe_rho_sampling), within 5% of the bound, and is reconstructed.
+TEST(Certify, HnnCrustRhoTheoremMeetsItsHypothesisOnEveryCase) {
+  testing::TemporaryDirectory dir;
+  Certify_options options = small_run(dir.path(), 16);
+  options.below_bound = 0.95;
+  options.measure = certify::Measure::rho;
+  const Certify_summary s = certify_algorithm(*algorithms::find_algorithm("hnn-crust"), options);
+  EXPECT_EQ(s.bound, 0.9);
+  EXPECT_EQ(s.hypothesis_violations, 0u);
+  EXPECT_EQ(s.failures, 0u);
+  EXPECT_EQ(s.passed + s.inconclusive, 16u);
+  for (const Result_row& row : read_results_csv(dir.path() / "results.csv")) {
+    EXPECT_TRUE(row[Column::input].ends_with("|rho=0.855")) << row[Column::input];
+    EXPECT_LE(std::stod(row[Column::rho]), 0.855);
+    EXPECT_GE(std::stod(row[Column::rho]), 0.95 * 0.855);
+  }
+  EXPECT_THROW(certify_algorithm(*algorithms::find_algorithm("nn-crust"), options), std::invalid_argument);  // no rho bound
+}
+
+// Connect2D's theorem has two hypotheses, epsilon < 1/2 and u < 1.609; the graded sampler
+// meets both on every case (the safe epsilon sampler alone met them on 51 of 300).
+TEST(Certify, Connect2DCasesMeetBothHypotheses) {
+  testing::TemporaryDirectory dir;
+  Certify_options options = small_run(dir.path(), 16);
+  options.below_bound = 0.95;
+  const Certify_summary s = certify_algorithm(*algorithms::find_algorithm("connect2d"), options);
+  EXPECT_EQ(s.hypothesis_violations, 0u);
+  EXPECT_EQ(s.failures, 0u);
+  for (const Result_row& row : read_results_csv(dir.path() / "results.csv")) {
+    EXPECT_LT(std::stod(row[Column::uniformity]), 1.609);
+    EXPECT_LE(std::stod(row[Column::epsilon]), 0.475);
+  }
+}
+
+// The benchmark's smooth families beside Fourier curves: nested pairs and rounded stars,
+// NN-Crust's theorem holding on each.
+TEST(Certify, MixedFamiliesHoldForNnCrust) {
+  testing::TemporaryDirectory dir;
+  Certify_options options = small_run(dir.path(), 8);
+  options.curves = "mixed";
+  const Certify_summary s = certify_algorithm(*algorithms::find_algorithm("nn-crust"), options);
+  EXPECT_EQ(s.cases, 8u);
+  EXPECT_EQ(s.failures, 0u);
+  EXPECT_EQ(s.hypothesis_violations, 0u);
+  std::size_t nested = 0, stars = 0;
+  for (const Result_row& row : read_results_csv(dir.path() / "results.csv"))
+    nested += row[Column::input].starts_with("nested:"), stars += row[Column::input].starts_with("star:");
+  EXPECT_EQ(nested, 2u);
+  EXPECT_EQ(stars, 2u);
 }
 
 }  // namespace

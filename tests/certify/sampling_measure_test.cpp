@@ -2,6 +2,7 @@
 
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -172,6 +173,36 @@ RC_GTEST_PROP(SafeEpsilonSampling, MeasuresAtMostItsTarget, ()) {
     const double truth = brute_force_epsilon(lfs.curve(), sample.points, sample.minimum_lfs, 4000, curve.closed_form);
     RC_ASSERT(truth <= epsilon * 1.01);
   }
+}
+
+// HNN-Crust's hypothesis on purpose: the measured rho at most the target, and near it. On
+// the sharp-corner family the floor sets the reach near the apex: measured with it.
+RC_GTEST_PROP(SafeRhoSampling, MeasuresAtMostItsTarget, ()) {
+  const int family = *testing::even_in_range(0, 4);
+  const int index = *testing::even_in_range(0, 6);
+  const double rho = *testing::even_in_range(50, 951) / 1000.0;
+  const Local_feature_size& lfs = *family_curve(family, index).lfs;
+  const Sample sample = safe_rho_sampling(lfs, rho, default_minimum_lfs(lfs));
+  RC_TAG(family);
+  const double measured = measure_rho(lfs, sample, sample.minimum_lfs).rho;
+  RC_ASSERT(measured <= rho);
+  RC_ASSERT(measured > 0.8 * rho);
+}
+
+// Connect2D's two hypotheses at once: epsilon at most the target, and near it, and every
+// point's longer chord below the uniformity bound times its shorter one.
+RC_GTEST_PROP(GradedEpsilonSampling, MeetsEpsilonAndUniformity, ()) {
+  const int family = *testing::even_in_range(0, 3);  // smooth curves: the corner family's floor makes chords of any ratio
+  const int index = *testing::even_in_range(0, 6);
+  const double epsilon = *testing::even_in_range(50, 500) / 1000.0;
+  const double uniformity = 1 + *testing::even_in_range(50, 1000) / 1000.0;
+  const Local_feature_size& lfs = *family_curve(family, index).lfs;
+  const Sample graded = graded_epsilon_sampling(lfs, epsilon, uniformity, default_minimum_lfs(lfs));
+  RC_TAG(family);
+  const Sampling_measure measured = measure_sampling(lfs, graded);
+  RC_ASSERT(measured.uniformity.uniformity < uniformity);
+  RC_ASSERT(measured.epsilon.epsilon <= epsilon);
+  RC_ASSERT(measured.epsilon.epsilon > 0.8 * epsilon);  // a circle of few points: N and N + 1 differ that much
 }
 
 }  // namespace
