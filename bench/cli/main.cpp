@@ -17,6 +17,7 @@
 #include "bench/cli/reconstruct_command.h"
 #include "bench/cli/run_command.h"
 #include "bench/cli/sample_command.h"
+#include "bench/cli/slurm_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"curvebench: planar curve reconstruction on exact geometry"};
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
   curvebench::cli::add_certify_command(app);
   curvebench::cli::add_ambiguity_command(app);
   curvebench::cli::add_hunt_command(app);
+  curvebench::cli::add_slurm_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
