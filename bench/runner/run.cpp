@@ -245,17 +245,29 @@ void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> row
 
 // The jobs of this shard. Job c * A + a runs algorithm a on case c: numbers that do not
 // depend on the shard, so that shards and resumed runs agree on them.
+// Which shard runs a job: a shard makes the input of each case it holds a job of, and
+// making an input (sampling, lfs, the dense true curve) costs more than most algorithms
+// do, so a case's jobs, and consecutive cases of one source (input_source: the same
+// curve), stay in one shard: these units are dealt to the shards in turn. A run of fewer
+// units than shards deals its jobs instead, so that every shard has work.
 std::vector<Job> planned_jobs(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen,
                               const Run_options& options) {
   if (options.shards == 0 || options.shard == 0 || options.shard > options.shards)
     throw std::invalid_argument("--shard K/N needs 1 <= K <= N");
+  std::vector<std::size_t> unit_of(cases.size());
+  std::size_t units = 0;
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    if (c == 0 || input_source(cases[c].input) != input_source(cases[c - 1].input)) ++units;
+    unit_of[c] = units - 1;
+  }
+  const bool by_unit = units >= options.shards;
   std::map<std::pair<std::size_t, std::string_view>, std::size_t> seen;  // jobs so far per algorithm and suite
   std::vector<Job> jobs;
   for (std::size_t c = 0; c < cases.size(); ++c)
     for (std::size_t a = 0; a < chosen.size(); ++a) {
       const bool early = seen[{a, cases[c].suite}]++ < success_pictures;
-      if (const std::size_t number = c * chosen.size() + a; number % options.shards == options.shard - 1)
-        jobs.push_back({number, c, chosen[a], early});
+      const std::size_t number = c * chosen.size() + a;
+      if ((by_unit ? unit_of[c] : number) % options.shards == options.shard - 1) jobs.push_back({number, c, chosen[a], early});
     }
   return jobs;
 }

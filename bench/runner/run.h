@@ -2,7 +2,9 @@
 // input of a suite, as jobs in worker processes (process_pool.h), each row appended to
 // DIR/results.csv the moment it ends, so that nothing computed is lost when a run is
 // interrupted and --resume runs only what is missing. --shard K/N runs a deterministic 1/N
-// of the jobs (job j belongs to shard j mod N + 1) and `curvebench merge` combines shards.
+// of the jobs and `curvebench merge` combines shards: the cases, in runs of one source
+// (the same curve), are dealt to the shards in turn, so that no input is made twice; a
+// run of fewer such runs than shards deals its jobs (job j to shard j mod N + 1).
 //
 // DIR/ holds run.json (which run: a fingerprint of its jobs, and which shard of it),
 // results.csv (sorted by job at the end), results.json, pictures/JOB.svg (a

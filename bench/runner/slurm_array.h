@@ -1,7 +1,7 @@
 // The shard of a Slurm array task: `sbatch --array=A-B` starts B - A + 1 tasks of one
 // script, each with SLURM_ARRAY_TASK_ID (A..B), SLURM_ARRAY_TASK_MIN (A), _MAX (B) and
 // _COUNT set, so `curvebench run`, `certify` and `rate` without --shard run shard
-// ID - MIN + 1 of MAX - MIN + 1 (run.h: shard K of N holds jobs j with j mod N = K - 1).
+// ID - MIN + 1 of MAX - MIN + 1 (run.h says which jobs shard K of N holds).
 // An array that is not one range (`--array=1,5,9`, `--array=1-9:2`) cannot be read as
 // shards: its COUNT is not MAX - MIN + 1, and it is refused rather than guessed at.
 #pragma once

@@ -411,6 +411,34 @@ TEST(Run, SomePicturesAreTheFirstFailuresAndJobsPerAlgorithmAndSuite) {
   EXPECT_EQ(without_runtimes(read_results_csv(dir.path() / "merged" / "results.csv")), without_runtimes(rows));
 }
 
+// A shard makes the inputs of its cases only: the cases of one curve (consecutive cases
+// of one source) stay in one shard, and the curves are dealt in turn. A run of fewer
+// curves than shards deals its jobs, so that no shard is idle.
+TEST(Run, ShardsKeepTheCasesOfACurveTogether) {
+  testing::TemporaryDirectory dir;
+  std::vector<Suite_case> cases;
+  for (int r = 1; r <= 6; ++r)
+    for (const char* epsilon : {"0.3", "0.5"})
+      cases.push_back({"t", "circle:r=" + std::to_string(r) + "|epsilon=" + epsilon, std::string("epsilon=") + epsilon});
+  const std::vector<const algorithms::Algorithm*> chosen{algorithms::find_algorithm("emst"),
+                                                         algorithms::find_algorithm("nn-crust")};
+  Run_options options{.suite = "", .output = {}, .jobs = 1, .pictures = Pictures::none, .report = false, .progress = false};
+  std::map<std::string, std::set<std::size_t>> shards_of_curve;
+  for (const std::size_t shard : {1, 2, 3}) {
+    options.output = dir.path() / ("shard" + std::to_string(shard));
+    options.shard = shard, options.shards = 3;
+    EXPECT_EQ(run_cases(cases, chosen, options).jobs, 8u) << "2 curves x 2 levels x 2 algorithms";
+    for (const Result_row& row : read_results_csv(options.output / "results.csv"))
+      shards_of_curve[std::string(input_source(row[Column::input]))].insert(shard);
+  }
+  ASSERT_EQ(shards_of_curve.size(), 6u);
+  for (const auto& [curve, in] : shards_of_curve) EXPECT_EQ(in.size(), 1u) << curve << " is made in one shard only";
+
+  const std::vector<Suite_case> one_curve(cases.begin(), cases.begin() + 2);
+  options.output = dir.path() / "few", options.shard = 3;
+  EXPECT_EQ(run_cases(one_curve, chosen, options).jobs, 1u) << "4 jobs of one curve, dealt to 3 shards";
+}
+
 // The message of the std::invalid_argument that merging `shards` throws, or "".
 std::string merge_error(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& output) {
   try {
