@@ -188,8 +188,16 @@ void write_scripts(Slurm_options& o) {
     return;
   }
   const std::string array_id = submit({array.string()});
-  const std::string merge_id = submit({"--dependency=afterok:" + array_id, merge.string()});
+  std::string merge_id;
+  try {
+    merge_id = submit({"--dependency=afterok:" + array_id, merge.string()});
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(std::string(error.what()) + " (the array is submitted: job " + array_id + ")");
+  }
   std::cout << "array job " << array_id << '\n' << "merge job " << merge_id << '\n';
+  // afterok never holds once a task has failed for good: the merge then waits forever.
+  std::cerr << "if a task K fails for good: scancel " << merge_id << "; id=$(sbatch --parsable --array=K "
+            << shell_word(array.string()) << ") && sbatch --dependency=afterok:$id " << shell_word(merge.string()) << '\n';
 }
 
 }  // namespace
