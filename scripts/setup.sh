@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages curvebench needs, and only those that are missing.
-#   scripts/setup.sh        everything: the build, the tests, benchmarks, fuzzers, the browser check
+#   scripts/setup.sh        everything: the build, the tests, benchmarks, fuzzers, the browser check,
+#                           Slurm for the cluster test
 #   scripts/setup.sh run    only what `curvebench` and its report need (scripts/run.sh)
 # Safe to run repeatedly; it calls apt-get only when something is absent.
 set -euo pipefail
@@ -18,6 +19,7 @@ test_packages=(
   clang-14 libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   python3-scipy
+  slurm-wlm munge  # tests/cli/curvebench_slurm_test.sh starts a one-node Slurm cluster of its own
 )
 case "${1:-test}" in
   run) packages=("${run_packages[@]}") ;;

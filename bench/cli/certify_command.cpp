@@ -9,6 +9,7 @@
 #include "algorithms/registry.h"
 #include "bench/cli/algorithm_options.h"
 #include "bench/runner/certification.h"
+#include "bench/runner/slurm_array.h"
 
 namespace curvebench::cli {
 namespace {
@@ -27,7 +28,8 @@ void run(Certify_command_options& o) {
   std::string name(algorithm->name);
   if (o.below_bound) o.certify.below_bound = *o.below_bound;
   if (o.rho) o.certify.measure = certify::Measure::rho;
-  if (!o.shard.empty()) std::tie(o.certify.run.shard, o.certify.run.shards) = bench::parse_shard(o.shard);
+  std::tie(o.certify.run.shard, o.certify.run.shards) =
+      bench::chosen_shard(o.shard, bench::slurm_array_task_from_environment());
   o.certify.run.output = o.output.empty() ? std::filesystem::path("out") / ("certify-" + name) : o.output;
   o.certify.run.progress = !o.quiet && !o.json;
   o.certify.run.pictures = bench::Pictures::failures;
@@ -92,7 +94,7 @@ void add_certify_command(CLI::App& app) {
   command->add_option("--seed", o->certify.seed, "Seed of the generated curves")->capture_default_str();
   command->add_option("-o,--output", o->output, "Output directory (default out/certify-ALGORITHM), written anew");
   command->add_option("-j,--jobs", o->certify.run.jobs, "Worker processes (default: one per core)");
-  command->add_option("--shard", o->shard, "Run shard K of N (K/N); combine with `curvebench merge`");
+  command->add_option("--shard", o->shard, "Run shard K of N (K/N); combine with `curvebench merge`. Default: the Slurm array task's, else all");
   command->add_flag("--resume", o->certify.run.resume, "Continue an interrupted certification");
   command->add_option("--timeout", o->certify.run.timeout_seconds, "Time limit per case in seconds")->capture_default_str();
   command->add_flag("--json", o->json, "Print the summary as JSON");

@@ -19,6 +19,7 @@
 #include "bench/cli/reconstruct_command.h"
 #include "bench/cli/run_command.h"
 #include "bench/cli/sample_command.h"
+#include "bench/cli/slurm_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"curvebench: planar curve reconstruction on exact geometry"};
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
   curvebench::cli::add_hunt_command(app);
   curvebench::cli::add_annotate_command(app);
   curvebench::cli::add_make_input_command(app);
+  curvebench::cli::add_slurm_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

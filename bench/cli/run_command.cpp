@@ -10,6 +10,7 @@
 
 #include "bench/cli/algorithm_options.h"
 #include "bench/runner/run.h"
+#include "bench/runner/slurm_array.h"
 
 namespace curvebench::cli {
 namespace {
@@ -31,12 +32,14 @@ constexpr const char* pictures_help =
 
 void run(Run_command_options& o) {
   o.run.algorithms = algorithm_names(o.algorithms);
-  if (!o.shard.empty()) std::tie(o.run.shard, o.run.shards) = bench::parse_shard(o.shard);
+  std::tie(o.run.shard, o.run.shards) = bench::chosen_shard(o.shard, bench::slurm_array_task_from_environment());
   o.run.pictures = picture_modes.at(o.pictures);
   o.run.report = !o.no_report;
   o.run.progress = !o.quiet;
   const bench::Run_summary s = bench::run_suite(o.run);
-  std::cerr << "run " << o.run.suite << ": " << s.jobs << " jobs";
+  std::cerr << "run " << o.run.suite;
+  if (o.run.shards > 1) std::cerr << " shard " << o.run.shard << '/' << o.run.shards;
+  std::cerr << ": " << s.jobs << " jobs";
   if (s.resumed) std::cerr << " (" << s.resumed << " done before)";
   std::cerr << "; ran " << s.ok + s.failed + s.invalid_output + s.crashed + s.timed_out << ": " << s.ok << " ok, "
             << s.failed << " failed, ";
@@ -60,7 +63,8 @@ void add_run_commands(CLI::App& app) {
                       "(see `curvebench reconstruct --help`) or a name from --algorithm-file");
   add_algorithm_file_option(command);
   command->add_option("-j,--jobs", o->run.jobs, "Worker processes (default: one per core)");
-  command->add_option("--shard", o->shard, "Run shard K of N (K/N), for job arrays; combine with `curvebench merge`");
+  command->add_option("--shard", o->shard, "Run shard K of N (K/N), for job arrays; combine with `curvebench merge`. Default: the "
+                      "Slurm array task's (SLURM_ARRAY_TASK_ID - MIN + 1 of MAX - MIN + 1), else the whole run");
   command->add_flag("--resume", o->run.resume, "Continue an interrupted run in the same directory");
   command->add_option("--timeout", o->run.timeout_seconds, "Time limit per job in seconds (0: none)")
       ->capture_default_str();

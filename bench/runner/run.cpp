@@ -6,13 +6,17 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -232,17 +236,29 @@ void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> row
 
 // The jobs of this shard. Job c * A + a runs algorithm a on case c: numbers that do not
 // depend on the shard, so that shards and resumed runs agree on them.
+// Which shard runs a job: a shard makes the input of each case it holds a job of, and
+// making an input (sampling, lfs, the dense true curve) costs more than most algorithms
+// do, so a case's jobs, and consecutive cases of one source (input_source: the same
+// curve), stay in one shard: these units are dealt to the shards in turn. A run of fewer
+// units than shards deals its jobs instead, so that every shard has work.
 std::vector<Job> planned_jobs(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen,
                               const Run_options& options) {
   if (options.shards == 0 || options.shard == 0 || options.shard > options.shards)
     throw std::invalid_argument("--shard K/N needs 1 <= K <= N");
+  std::vector<std::size_t> unit_of(cases.size());
+  std::size_t units = 0;
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    if (c == 0 || input_source(cases[c].input) != input_source(cases[c - 1].input)) ++units;
+    unit_of[c] = units - 1;
+  }
+  const bool by_unit = units >= options.shards;
   std::map<std::pair<std::size_t, std::string_view>, std::size_t> seen;  // jobs so far per algorithm and suite
   std::vector<Job> jobs;
   for (std::size_t c = 0; c < cases.size(); ++c)
     for (std::size_t a = 0; a < chosen.size(); ++a) {
       const bool early = seen[{a, cases[c].suite}]++ < success_pictures;
-      if (const std::size_t number = c * chosen.size() + a; number % options.shards == options.shard - 1)
-        jobs.push_back({number, c, chosen[a], early});
+      const std::size_t number = c * chosen.size() + a;
+      if ((by_unit ? unit_of[c] : number) % options.shards == options.shard - 1) jobs.push_back({number, c, chosen[a], early});
     }
   return jobs;
 }
@@ -318,6 +334,76 @@ Result_row lost_job_row(const Job& job, const Suite_case& c, const Bench_input& 
   return row;
 }
 
+// DIR/run.json: which run a directory holds and which shard of it, so that `merge` can
+// refuse shards of different runs and name the missing or unfinished ones. A run is its
+// plan: the cases and algorithms, whose fingerprint `plan` is the same for every shard.
+struct Run_manifest {
+  std::string plan, suite;
+  std::size_t algorithms = 0, cases = 0, shard = 1, shards = 1, jobs = 0;
+  bool operator==(const Run_manifest&) const = default;
+};
+
+constexpr const char* manifest_name = "run.json";
+
+// FNV-1a, 64 bits, over every case and algorithm name: stable across machines and
+// builds (std::hash is not), and a different suite, level or algorithm list changes it.
+std::string plan_fingerprint(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen) {
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto add = [&](std::string_view text) {
+    for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    hash = (hash ^ 0xffu) * 1099511628211ull;  // a separator no name holds
+  };
+  for (const Suite_case& c : cases) add(c.suite), add(c.input), add(c.level);
+  for (const algorithms::Algorithm* algorithm : chosen) add(algorithm->name);
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
+
+Run_manifest manifest_of(const std::vector<Suite_case>& cases, const std::vector<const algorithms::Algorithm*>& chosen,
+                         const Run_options& options, std::size_t jobs) {
+  return {.plan = plan_fingerprint(cases, chosen),
+          .suite = !options.suite.empty() ? options.suite : cases.empty() ? "" : cases.front().suite,
+          .algorithms = chosen.size(),
+          .cases = cases.size(),
+          .shard = options.shard,
+          .shards = options.shards,
+          .jobs = jobs};
+}
+
+std::string describe(const Run_manifest& m) {
+  return "suite " + m.suite + ", " + std::to_string(m.cases) + " cases x " + std::to_string(m.algorithms) +
+         " algorithms, shard " + std::to_string(m.shard) + "/" + std::to_string(m.shards);
+}
+
+void write_manifest(const std::filesystem::path& dir, const Run_manifest& m) {
+  const nlohmann::json json = {{"plan", m.plan},   {"suite", m.suite},   {"algorithms", m.algorithms},
+                               {"cases", m.cases}, {"shard", m.shard},   {"shards", m.shards},
+                               {"jobs", m.jobs}};
+  std::ofstream(dir / manifest_name) << json.dump(2) << '\n';
+}
+
+std::optional<Run_manifest> read_manifest(const std::filesystem::path& dir) {
+  std::ifstream in(dir / manifest_name);
+  if (!in) return std::nullopt;
+  try {
+    const nlohmann::json json = nlohmann::json::parse(in);
+    return Run_manifest{.plan = json.at("plan"), .suite = json.at("suite"), .algorithms = json.at("algorithms"),
+                        .cases = json.at("cases"), .shard = json.at("shard"), .shards = json.at("shards"),
+                        .jobs = json.at("jobs")};
+  } catch (const nlohmann::json::exception& error) {
+    throw std::invalid_argument((dir / manifest_name).string() + ": " + error.what());
+  }
+}
+
+// "2, 5 and 7"
+std::string number_list(const std::vector<std::size_t>& numbers) {
+  std::string text;
+  for (std::size_t i = 0; i < numbers.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == numbers.size() ? " and " : ", ") + std::to_string(numbers[i]);
+  return text;
+}
+
 }  // namespace
 
 Run_summary run_suite(const Run_options& options) {
@@ -333,6 +419,11 @@ Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<co
   const std::filesystem::path csv = options.output / "results.csv";
   std::filesystem::create_directories(options.output / "pictures");
   std::vector<Result_row> rows = earlier_rows(csv, jobs, cases, options.resume);
+  const Run_manifest manifest = manifest_of(cases, chosen, options, jobs.size());
+  if (const auto earlier = read_manifest(options.output); earlier && options.resume && *earlier != manifest)
+    throw std::invalid_argument(options.output.string() + " holds another run (" + describe(*earlier) +
+                                "), not this one (" + describe(manifest) + ")");
+  write_manifest(options.output, manifest);
   write_results_csv(csv, rows);  // drops a line cut off by an interrupted run
   std::vector<bool> done(cases.size() * chosen.size(), false);
   for (const Result_row& row : rows) done[row.job()] = true;
@@ -406,12 +497,51 @@ Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<co
 
 std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output,
                        Pictures pictures, bool report) {
-  std::map<std::size_t, Result_row> by_job;
-  std::filesystem::create_directories(output / "pictures");
+  if (shards.empty()) throw std::invalid_argument("no shard directories to merge");
+  // First the shards' manifests: one run, every shard there once and finished.
+  std::vector<Run_manifest> manifests;
+  std::map<std::size_t, std::filesystem::path> shard_dirs;
   for (const std::filesystem::path& shard : shards) {
     if (!std::filesystem::exists(shard / "results.csv"))
       throw std::invalid_argument(shard.string() + ": no results.csv");
-    for (Result_row& row : read_results_csv(shard / "results.csv")) {
+    const std::optional<Run_manifest> m = read_manifest(shard);
+    if (!m) throw std::invalid_argument(shard.string() + ": no " + manifest_name + " (not written by `curvebench run`?)");
+    if (!manifests.empty() && (m->plan != manifests.front().plan || m->shards != manifests.front().shards))
+      throw std::invalid_argument(shard.string() + " is of another run (" + describe(*m) + ") than " +
+                                  shards.front().string() + " (" + describe(manifests.front()) + ")");
+    if (const auto [it, added] = shard_dirs.emplace(m->shard, shard); !added)
+      throw std::invalid_argument("shard " + std::to_string(m->shard) + " twice: " + it->second.string() + " and " +
+                                  shard.string());
+    manifests.push_back(*m);
+  }
+  const std::size_t shard_count = manifests.front().shards;
+  std::vector<std::size_t> missing;
+  for (std::size_t k = 1; k <= shard_count; ++k)
+    if (!shard_dirs.contains(k)) missing.push_back(k);
+
+  std::vector<std::vector<Result_row>> shard_rows;
+  std::vector<std::string> unfinished;
+  for (std::size_t s = 0; s < shards.size(); ++s) {
+    shard_rows.push_back(read_results_csv(shards[s] / "results.csv"));
+    if (shard_rows.back().size() < manifests[s].jobs)
+      unfinished.push_back("shard " + std::to_string(manifests[s].shard) + " has " +
+                           std::to_string(shard_rows.back().size()) + " of its " + std::to_string(manifests[s].jobs) +
+                           " jobs (" + shards[s].string() + ")");
+  }
+  if (!missing.empty() || !unfinished.empty()) {
+    std::string problem;
+    if (!missing.empty())
+      problem = "missing shard" + std::string(missing.size() > 1 ? "s " : " ") + number_list(missing) + " of " +
+                std::to_string(shard_count);
+    for (const std::string& line : unfinished) problem += (problem.empty() ? "" : "; ") + line;
+    throw std::invalid_argument(problem + ": run them (with --resume) before merging");
+  }
+
+  std::map<std::size_t, Result_row> by_job;
+  std::filesystem::create_directories(output / "pictures");
+  for (std::size_t s = 0; s < shards.size(); ++s) {
+    const std::filesystem::path& shard = shards[s];
+    for (const Result_row& row : shard_rows[s]) {
       const auto [it, added] = by_job.emplace(row.job(), row);
       if (!added && !same_job(it->second, row))
         throw std::invalid_argument("job " + row[Column::job] + " differs between shards (" + shard.string() + ")");
@@ -424,6 +554,10 @@ std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std:
   std::vector<Result_row> rows;
   for (auto& [job, row] : by_job) rows.push_back(std::move(row));
   const std::size_t count = rows.size();
+  // The merged directory is the whole run, as if it had run on one machine.
+  Run_manifest whole = manifests.front();
+  whole.shard = whole.shards = 1, whole.jobs = count;
+  write_manifest(output, whole);
   write_outputs(output, std::move(rows), report, pictures);
   return count;
 }

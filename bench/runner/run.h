@@ -2,9 +2,12 @@
 // input of a suite, as jobs in worker processes (process_pool.h), each row appended to
 // DIR/results.csv the moment it ends, so that nothing computed is lost when a run is
 // interrupted and --resume runs only what is missing. --shard K/N runs a deterministic 1/N
-// of the jobs (job j belongs to shard j mod N + 1) and `curvebench merge` combines shards.
+// of the jobs and `curvebench merge` combines shards: the cases, in runs of one source
+// (the same curve), are dealt to the shards in turn, so that no input is made twice; a
+// run of fewer such runs than shards deals its jobs (job j to shard j mod N + 1).
 //
-// DIR/ holds results.csv (sorted by job at the end), results.json, pictures/JOB.svg (a
+// DIR/ holds run.json (which run: a fingerprint of its jobs, and which shard of it),
+// results.csv (sorted by job at the end), results.json, pictures/JOB.svg (a
 // reconstruction of at most 5,000 points on its ground truth, wrong edges red, missing
 // ones dashed) and the report (report.html, summary.csv and charts/, by
 // bench/report/make_report.py).
@@ -62,8 +65,11 @@ Run_summary run_cases(const std::vector<Suite_case>& cases, const std::vector<co
 
 // Combines the results of shard runs into `output` (rows by job, pictures copied) and
 // writes results.json and, if asked, the report. `pictures`: what the shards ran with
-// (Pictures::some caps the merged pictures as one run would have). Throws std::invalid_argument if two
-// shards disagree on a job.
+// (Pictures::some caps the merged pictures as one run would have). Each run directory
+// names its run and shard in run.json; throws std::invalid_argument, before writing
+// anything, for shards of different runs (another suite, level, algorithm list or shard
+// count), a shard given twice, and missing or unfinished shards (named by number), and
+// if two shards disagree on a job.
 std::size_t merge_runs(std::span<const std::filesystem::path> shards, const std::filesystem::path& output,
                        Pictures pictures, bool report);
 

@@ -411,6 +411,88 @@ TEST(Run, SomePicturesAreTheFirstFailuresAndJobsPerAlgorithmAndSuite) {
   EXPECT_EQ(without_runtimes(read_results_csv(dir.path() / "merged" / "results.csv")), without_runtimes(rows));
 }
 
+// A shard makes the inputs of its cases only: the cases of one curve (consecutive cases
+// of one source) stay in one shard, and the curves are dealt in turn. A run of fewer
+// curves than shards deals its jobs, so that no shard is idle.
+TEST(Run, ShardsKeepTheCasesOfACurveTogether) {
+  testing::TemporaryDirectory dir;
+  std::vector<Suite_case> cases;
+  for (int r = 1; r <= 6; ++r)
+    for (const char* epsilon : {"0.3", "0.5"})
+      cases.push_back({"t", "circle:r=" + std::to_string(r) + "|epsilon=" + epsilon, std::string("epsilon=") + epsilon});
+  const std::vector<const algorithms::Algorithm*> chosen{algorithms::find_algorithm("emst"),
+                                                         algorithms::find_algorithm("nn-crust")};
+  Run_options options{.suite = "", .output = {}, .jobs = 1, .pictures = Pictures::none, .report = false, .progress = false};
+  std::map<std::string, std::set<std::size_t>> shards_of_curve;
+  for (const std::size_t shard : {1, 2, 3}) {
+    options.output = dir.path() / ("shard" + std::to_string(shard));
+    options.shard = shard, options.shards = 3;
+    EXPECT_EQ(run_cases(cases, chosen, options).jobs, 8u) << "2 curves x 2 levels x 2 algorithms";
+    for (const Result_row& row : read_results_csv(options.output / "results.csv"))
+      shards_of_curve[std::string(input_source(row[Column::input]))].insert(shard);
+  }
+  ASSERT_EQ(shards_of_curve.size(), 6u);
+  for (const auto& [curve, in] : shards_of_curve) EXPECT_EQ(in.size(), 1u) << curve << " is made in one shard only";
+
+  const std::vector<Suite_case> one_curve(cases.begin(), cases.begin() + 2);
+  options.output = dir.path() / "few", options.shard = 3;
+  EXPECT_EQ(run_cases(one_curve, chosen, options).jobs, 1u) << "4 jobs of one curve, dealt to 3 shards";
+}
+
+// The message of the std::invalid_argument that merging `shards` throws, or "".
+std::string merge_error(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& output) {
+  try {
+    merge_runs(shards, output, Pictures::none, false);
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// A merge takes the shards of one run, each once and finished, and names what is wrong:
+// the other run, the missing shards by number, the unfinished one. The merged directory is
+// then a whole run of its own.
+TEST(Run, MergeRefusesOtherRunsAndNamesMissingShards) {
+  testing::TemporaryDirectory dir;
+  Run_options options{.suite = "smoke", .output = {}, .algorithms = {"nn-crust", "emst"}, .jobs = 1,
+                      .pictures = Pictures::none, .report = false, .progress = false};
+  const auto shard_dir = [&](std::string name, std::size_t shard, std::size_t shards) {
+    options.output = dir.path() / name;
+    options.shard = shard, options.shards = shards;
+    run_suite(options);
+    return options.output;
+  };
+  std::vector<std::filesystem::path> shards;
+  for (std::size_t k = 1; k <= 4; ++k) shards.push_back(shard_dir("s" + std::to_string(k), k, 4));
+  const std::filesystem::path out = dir.path() / "merged";
+
+  EXPECT_NE(merge_error({shards[0], shards[1], shards[3]}, out).find("missing shard 3 of 4"), std::string::npos);
+  EXPECT_NE(merge_error({shards[1]}, out).find("missing shards 1, 3 and 4 of 4"), std::string::npos);
+  EXPECT_NE(merge_error({shards[0], shards[0]}, out).find("shard 1 twice"), std::string::npos);
+  const auto half = shard_dir("half", 1, 2);
+  EXPECT_NE(merge_error({shards[1], half}, out).find("is of another run"), std::string::npos) << "other shard count";
+  options.algorithms = {"nn-crust", "crust"};
+  const auto other = shard_dir("other", 3, 4);
+  EXPECT_NE(merge_error({shards[0], shards[1], other, shards[3]}, out).find("is of another run"), std::string::npos);
+  options.algorithms = {"nn-crust", "emst"};
+  // A task killed before its first row: its directory is there, its job is not.
+  const auto cut = dir.path() / "cut";
+  std::filesystem::copy(shards[2], cut, std::filesystem::copy_options::recursive);
+  write_results_csv(cut / "results.csv", {});
+  EXPECT_NE(merge_error({shards[0], shards[1], cut, shards[3]}, out).find("shard 3 has 0 of its 1 jobs"),
+            std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written before the shards are checked";
+
+  // Resuming a directory with another run's shard in it is refused too.
+  options.output = shards[0], options.shard = 2, options.resume = true;
+  EXPECT_THROW(run_suite(options), std::invalid_argument);
+
+  EXPECT_EQ(merge_error(shards, out), "");
+  EXPECT_EQ(read_results_csv(out / "results.csv").size(), 4u);
+  options.output = out, options.shard = 1, options.shards = 1;
+  EXPECT_EQ(run_suite(options).resumed, 4u) << "the merged directory is the whole run, resumable";
+}
+
 TEST(Run, RejectsUnknownSuitesAlgorithmsAndShards) {
   testing::TemporaryDirectory dir;
   EXPECT_THROW(run_suite({.suite = "no-such-suite", .output = dir.path()}), std::invalid_argument);

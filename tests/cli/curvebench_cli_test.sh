@@ -156,4 +156,17 @@ head -12 "$work/ring.xy" >"$work/ring12.xy"
 "$curvebench" reconstruct -a beta-skeleton -p beta=0.5 -i "$work/ring12.xy" -o "$work/x.edges" 2>"$work/err"
 check "an out-of-range parameter is a one-line error" test "$?" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
 
+# slurm writes its scripts without Slurm (cli.slurm runs them on a cluster).
+"$curvebench" slurm run smoke -a nn-crust --pictures none -o "$work/cluster" --tasks 3 --time 5:00 2>/dev/null
+check "slurm writes a 3-task array of shards K/3 that resume" \
+  grep -q -- '--shard "$shard/3" .* --resume' "$work/cluster/slurm/array.sbatch"
+check "slurm writes the merge of the 3 shards with their --pictures" \
+  grep -q -- "merge -o $work/cluster --pictures none $work/cluster/shard-{1..3}" "$work/cluster/slurm/merge.sbatch"
+"$curvebench" slurm run smoke --shard 1/2 -o "$work/cluster" --tasks 2 2>"$work/err"
+check "slurm refuses the options its scripts set" test $? -eq 2 -a "$(grep -c -- '--shard' "$work/err")" -eq 1
+"$curvebench" slurm run no-such-suite -o "$work/cluster" --tasks 2 2>"$work/err"
+check "slurm refuses an unknown suite before writing anything" test $? -eq 2 -a "$(grep -c no-such-suite "$work/err")" -eq 1
+SLURM_ARRAY_TASK_ID=9 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=4 "$curvebench" run smoke -o "$work/bad-task" 2>"$work/err"
+check "a task ID outside its array is a one-line error" test $? -eq 2 -a "$(grep -c 'outside the array 1..4' "$work/err")" -eq 1
+
 finish
