@@ -85,14 +85,25 @@ std::vector<Edge> gathang_reconstruction(std::span<const Point> points, double a
 
   // C, corner candidates nearest-neighbour distance first: each step changes the graph the
   // next one reads, so an order by index made the output depend on the input's order, and
-  // one by position on its orientation (`curvebench hunt`). Ties (degenerate input): the
-  // lexicographically smaller point first.
+  // one by position on its orientation (`curvebench hunt`). Two mutual nearest neighbours
+  // always tie on that distance: then the nearer to its next Delaunay neighbour goes first,
+  // which a rotation, a reflection or a scaling keeps (`curvebench hunt` found the order by
+  // position flip under a reflection). Ties left (degenerate input): the lexicographically
+  // smaller point first.
   const double cos_alpha = std::cos(alpha_degrees * std::numbers::pi / 180);
+  std::vector<Vertex> next_nearest(n);
+  for (Vertex v = 0; v < n; ++v)
+    next_nearest[v] = nearest_neighbor_where(dt, v, [&](Vertex w) { return w != proposed[v][0]; });
+  const auto compare_distance = geometry::Kernel().compare_distance_2_object();
+  const auto compare_reach = [&](Vertex v, Vertex vn, Vertex w, Vertex wn) {
+    if (vn == no_vertex || wn == no_vertex) return vn == wn ? CGAL::EQUAL : vn == no_vertex ? CGAL::LARGER : CGAL::SMALLER;
+    return compare_distance(dt.point(v), dt.point(vn), dt.point(w), dt.point(wn));
+  };
   std::vector<Vertex> by_spacing(n);
   std::iota(by_spacing.begin(), by_spacing.end(), Vertex{0});
-  const auto compare_distance = geometry::Kernel().compare_distance_2_object();
   std::sort(by_spacing.begin(), by_spacing.end(), [&](Vertex v, Vertex w) {
-    const auto order = compare_distance(dt.point(v), dt.point(proposed[v][0]), dt.point(w), dt.point(proposed[w][0]));
+    auto order = compare_reach(v, proposed[v][0], w, proposed[w][0]);
+    if (order == CGAL::EQUAL) order = compare_reach(v, next_nearest[v], w, next_nearest[w]);
     return order != CGAL::EQUAL ? order == CGAL::SMALLER : dt.point(v) < dt.point(w);
   });
   for (const Vertex c : by_spacing) {

@@ -147,11 +147,19 @@ std::vector<Suite_case> certification_cases(const Certify_options& options, cons
     if (family == "nested") return "nested:seed=" + std::to_string(base + i) + ",separation=0.1";
     return "star:seed=" + std::to_string(base + i) + ",angle=" + std::to_string(30 + 30 * (i % 3)) + ",rounding=0.05";
   };
-  const std::vector<std::string> families{"fourier", "multi", "nested", "rounded"};
-  if (std::ranges::find(families, options.curves) != families.end()) {
+  // A theorem about one curve (an algorithm that reconstructs one: Connect2D) is not
+  // tested on several.
+  const bool several = theorem.algorithm->capabilities.multiple != algorithms::Support::no;
+  const std::vector<std::string> families = several ? std::vector<std::string>{"fourier", "multi", "nested", "rounded"}
+                                                    : std::vector<std::string>{"fourier", "rounded"};
+  if (!several && (options.curves == "multi" || options.curves == "nested"))
+    throw std::invalid_argument(std::string(theorem.algorithm->name) + " reconstructs one curve: its theorem is not about " +
+                                options.curves + " curves");
+  if (options.curves == "multi" || options.curves == "nested" || std::ranges::find(families, options.curves) != families.end()) {
     for (std::size_t i = 0; i < options.count; ++i) sources.push_back(generated(options.curves, i));
   } else if (options.curves == "mixed") {
-    for (std::size_t i = 0; i < options.count; ++i) sources.push_back(generated(families[i % families.size()], i / families.size()));
+    for (std::size_t i = 0; i < options.count; ++i)
+      sources.push_back(generated(families[i % families.size()], i / families.size()));
   } else if (options.curves == "svg" || options.curves == "glyphs") {
     std::vector<std::string> all;
     if (options.curves == "glyphs") {

@@ -13,7 +13,8 @@
 // `fourier:seed=SEED*2^32+3i,harmonics=1+i%8,components=2+i%2|epsilon=E`, of `nested`
 // `nested:seed=SEED*2^32+i,separation=0.1|...`, of `rounded`
 // `star:seed=SEED*2^32+i,angle=30+30(i%3),rounding=0.05|...`; `mixed` takes case i/4 of
-// the four in turn. A rho theorem samples with `rho=R` (safe_rho_sampling), Connect2D's
+// the four in turn (i/2 of fourier and rounded for an algorithm that reconstructs one
+// curve, Connect2D, whose theorem is about one; multi and nested are refused for it). A rho theorem samples with `rho=R` (safe_rho_sampling), Connect2D's
 // with `epsilon=E|uniformity=1.609` (graded_epsilon_sampling).
 #pragma once
 

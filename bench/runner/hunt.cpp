@@ -94,30 +94,38 @@ struct Hunt_case {
   std::string curve;  // empty for a point set
 };
 
-// Smooth closed curves (one or two Fourier curves) sampled near and beyond the algorithm's
-// epsilon bound: at 0.95, 0.8 and 0.5 of it, where the theorem demands an exact
-// reconstruction, and at 1.2 and 2 times it, where only a crash, a hang or invalid output
-// is a defect. Without a bound, at epsilon 0.6 to 0.1. Each shrinks towards one curve of
-// one harmonic, seed 0, and the coarsest sampling (the fewest points) under the bound.
-rc::Gen<std::string> curve_samplings(std::optional<double> bound) {
+// Smooth closed curves (one Fourier curve, or two side by side for an algorithm that
+// reconstructs several curves: Connect2D's theorem is about one) sampled near and beyond
+// the algorithm's epsilon bound: at 0.95, 0.8 and 0.5 of it, where the theorem demands an
+// exact reconstruction, and at 1.2 and 2 times it, where only a crash, a hang or invalid
+// output is a defect. Without a bound, at epsilon 0.6 to 0.1. Each shrinks towards one
+// curve of one harmonic, seed 0, and the coarsest sampling (the fewest points) under the
+// bound.
+// A theorem that also bounds local uniformity (Connect2D's) gets graded samplings that
+// meet that bound too.
+rc::Gen<std::string> curve_samplings(std::optional<double> bound, std::optional<double> uniformity, bool several_curves) {
   const std::vector<double> levels = bound ? std::vector<double>{0.95 * *bound, 0.8 * *bound, 0.5 * *bound, 1.2 * *bound, 2 * *bound}
                                            : std::vector<double>{0.6, 0.4, 0.2, 0.1};
-  return rc::gen::map(rc::gen::tuple(rc::gen::inRange(1, 3), rc::gen::inRange(1, 9), rc::gen::inRange(0, 1 << 20),
+  return rc::gen::map(rc::gen::tuple(rc::gen::inRange(1, several_curves ? 3 : 2), rc::gen::inRange(1, 9), rc::gen::inRange(0, 1 << 20),
                                      rc::gen::inRange(0, int(levels.size()))),
-                      [levels](const std::tuple<int, int, int, int>& drawn) {
+                      [levels, uniformity](const std::tuple<int, int, int, int>& drawn) {
                         const auto& [components, harmonics, seed, level] = drawn;
                         const double epsilon = levels[std::size_t(level)];
                         return "fourier:seed=" + std::to_string(seed) + ",harmonics=" + std::to_string(harmonics) +
                                (components > 1 ? ",components=" + std::to_string(components) : "") +
-                               "|epsilon=" + format_number(epsilon);
+                               "|epsilon=" + format_number(epsilon) +
+                               (uniformity ? "|uniformity=" + format_number(*uniformity) : "");
                       });
 }
 
 // Three point sets to one curve sampling: the degenerate families find most defects, and a
 // sampling costs a medial axis to measure.
-rc::Gen<Hunt_case> hunt_cases(std::optional<double> bound) {
+rc::Gen<Hunt_case> hunt_cases(const std::optional<certify::Theorem>& theorem, bool several_curves) {
   const auto as_points = rc::gen::map(point_sets(), [](std::vector<Point> points) { return Hunt_case{std::move(points), {}}; });
-  const auto as_curve = rc::gen::map(curve_samplings(bound), [](std::string curve) { return Hunt_case{{}, std::move(curve)}; });
+  const auto as_curve =
+      rc::gen::map(curve_samplings(theorem ? std::optional(theorem->bound) : std::nullopt,
+                                   theorem ? theorem->uniformity_below : std::nullopt, several_curves),
+                   [](std::string curve) { return Hunt_case{{}, std::move(curve)}; });
   return rc::gen::oneOf(as_points, as_points, as_points, as_curve);
 }
 
@@ -398,7 +406,7 @@ Hunt_summary hunt(const Hunt_options& options) {
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   Hunt_summary summary;
   std::map<std::string, std::size_t> found;  // per kind
-  const rc::Gen<Hunt_case> generator = hunt_cases(theorem ? std::optional(theorem->bound) : std::nullopt);
+  const rc::Gen<Hunt_case> generator = hunt_cases(theorem, algorithm->capabilities.multiple != algorithms::Support::no);
   const auto defect_of = [&](const Hunt_case& c, Made_case& made_case) -> std::optional<Defect> {
     try {
       made_case = made(c);

@@ -4,9 +4,10 @@
 // Inputs, three of four: small point sets (0 to about 12 points) on an integer lattice, from
 // five families: any points, collinear runs, cocircular points, grid points and crowded points
 // (duplicates); scaled by a power of two that reaches 2^±1000 and the limits of double, and
-// with one coordinate moved by one ulp or none. One of four: a smooth closed curve (one or
-// two Fourier curves) sampled near and beyond the algorithm's epsilon bound (0.5, 0.8 and
-// 0.95 of it, 1.2 and 2 times it; without a bound, epsilon 0.6 to 0.1). Defects, each checked
+// with one coordinate moved by one ulp or none. One of four: a smooth closed curve (one
+// Fourier curve, or two for an algorithm that reconstructs several) sampled near and beyond
+// the algorithm's epsilon bound (0.5, 0.8 and 0.95 of it, 1.2 and 2 times it; without a
+// bound, epsilon 0.6 to 0.1). Defects, each checked
 // in a worker process of its own (a crash or a hang costs only its case):
 //   crash           the algorithm (or program) was killed by a signal
 //   hang            it ran past the case timeout

@@ -204,11 +204,17 @@ Edges brute_force_gathang(const std::vector<Point>& points, double alpha_degrees
     for (const std::size_t w : {nn[v], hn[v]})
       if (w < n && v < w && (nn[w] == v || hn[w] == v)) add(v, w);
   const Q cos_alpha(std::cos(alpha_degrees * std::numbers::pi / 180));
-  // Corners nearest-neighbour distance first, ties to the lexicographically smaller point.
+  // Corners nearest-neighbour distance first, then the distance to the nearest Delaunay
+  // neighbour but that one (none: last), then the lexicographically smaller point.
+  std::vector<std::size_t> next(n);
+  for (std::size_t v = 0; v < n; ++v) next[v] = nearest(v, neighbors[v], [&](std::size_t w) { return w != nn[v]; });
   std::vector<std::size_t> order = all;
   std::sort(order.begin(), order.end(), [&](std::size_t v, std::size_t w) {
     const Q dv = d2(v, nn[v]), dw = d2(w, nn[w]);
-    return dv != dw ? dv < dw : points[v] < points[w];
+    if (dv != dw) return dv < dw;
+    if ((next[v] < n) != (next[w] < n)) return next[v] < n;
+    if (next[v] < n && d2(v, next[v]) != d2(w, next[w])) return d2(v, next[v]) < d2(w, next[w]);
+    return points[v] < points[w];
   });
   for (const std::size_t c : order) {
     if (hn[c] < n || degree[c] >= 2) continue;
@@ -248,6 +254,22 @@ Edges sorted(Edges edges) {
     if (i > j) std::swap(i, j);
   std::sort(edges.begin(), edges.end());
   return edges;
+}
+
+// Found by `curvebench hunt -a gathang --seed 1` (5 minutes): 4 points in general position
+// whose mutual nearest neighbours 1 and 2 tied in the corner order, broken by position, so
+// that the mirror image got another curve. Mirrored, rotated and doubled, the edges agree.
+TEST(GathanG, IsReflectionInvariantOnTheHuntsFinding) {
+  const std::vector<Point> points{{0, 9095}, {21082, 0}, {29765, 21254}, {0, 33414}};
+  const Edges edges = sorted(gathang_reconstruction(points, 30));
+  std::vector<Point> mirrored, rotated, doubled;
+  for (const Point& p : points) mirrored.emplace_back(-p.x(), p.y()), doubled.emplace_back(2 * p.x(), 2 * p.y());
+  for (std::size_t i = 0; i < points.size(); ++i) rotated.push_back(points[(i + 1) % points.size()]);
+  EXPECT_EQ(sorted(gathang_reconstruction(mirrored, 30)), edges);
+  EXPECT_EQ(sorted(gathang_reconstruction(doubled, 30)), edges);
+  Edges back;
+  for (const auto& [i, j] : gathang_reconstruction(rotated, 30)) back.push_back(std::minmax((i + 1) % 4, (j + 1) % 4));
+  EXPECT_EQ(sorted(back), edges);
 }
 
 RC_GTEST_PROP(GathanG, MatchesARationalReimplementation, ()) {

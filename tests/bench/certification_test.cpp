@@ -172,6 +172,9 @@ TEST(Certify, Connect2DCasesMeetBothHypotheses) {
     EXPECT_LT(std::stod(row[Column::uniformity]), 1.609);
     EXPECT_LE(std::stod(row[Column::epsilon]), 0.475);
   }
+  // Its theorem is about one curve, as Connect2D reconstructs one.
+  options.curves = "multi";
+  EXPECT_THROW(certify_algorithm(*algorithms::find_algorithm("connect2d"), options), std::invalid_argument);
 }
 
 // The benchmark's smooth families beside Fourier curves: nested pairs and rounded stars,
