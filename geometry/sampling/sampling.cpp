@@ -248,16 +248,22 @@ void check_walk_arguments(const char* name, double target, double minimum_lfs) {
     throw std::invalid_argument(std::string(name) + ": the target and minimum_lfs must be positive and finite");
 }
 
+// The worst-covered point of [u, v] (its distance to the nearer end over its lfs), searched
+// along the curve (curve_search.h).
+Curve_maximum interval_epsilon(const Local_feature_size& lfs, std::size_t c, double u, double v, double minimum_lfs) {
+  const Curve_component& component = lfs.curve().components[c];
+  const Point pu = component.point(u), pv = component.point(v);
+  return maximize_along(lfs, c, u, v, [&](double s) {
+    const Point p = component.point(s);
+    return relative_distance(std::min(distance(p, pu), distance(p, pv)), lfs.at(c, s), minimum_lfs);
+  });
+}
+
 // Splits [u, v] at its worst-covered point until each part is covered within the target;
 // appends u and the split points.
 void cover(const Local_feature_size& lfs, std::size_t c, double u, double v, double target, double minimum_lfs,
            std::vector<double>& out) {
-  const Curve_component& component = lfs.curve().components[c];
-  const Point pu = component.point(u), pv = component.point(v);
-  const Curve_maximum worst = maximize_along(lfs, c, u, v, [&](double s) {
-    const Point p = component.point(s);
-    return relative_distance(std::min(distance(p, pu), distance(p, pv)), lfs.at(c, s), minimum_lfs);
-  });
+  const Curve_maximum worst = interval_epsilon(lfs, c, u, v, minimum_lfs);
   if (worst.value <= target * (1 - safe_margin) || !(worst.parameter > u && worst.parameter < v)) {
     out.push_back(u);
     return;
@@ -266,23 +272,34 @@ void cover(const Local_feature_size& lfs, std::size_t c, double u, double v, dou
   cover(lfs, c, worst.parameter, v, target, minimum_lfs, out);
 }
 
+// Each walked component's intervals between adjacent samples, the closing one of a closed
+// component included, given to `split(c, u, v, out)`, which appends u and its split points;
+// an open component keeps its last sample.
+template <class Split>
+std::vector<std::vector<double>> split_intervals(const Local_feature_size& lfs,
+                                                 const std::vector<std::vector<double>>& walked, Split split) {
+  std::vector<std::vector<double>> result;
+  for (std::size_t c = 0; c < walked.size(); ++c) {
+    const Curve_component& component = lfs.curve().components[c];
+    const std::vector<double>& s = walked[c];
+    auto& parameters = result.emplace_back();
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) split(c, s[i], s[i + 1], parameters);
+    if (component.closed())
+      split(c, s.back(), s.front() + piece_count(component), parameters);
+    else
+      parameters.push_back(s.back());
+  }
+  return result;
+}
+
 std::vector<std::vector<double>> safe_epsilon_parameters(const Local_feature_size& lfs, double epsilon,
                                                          double minimum_lfs) {
   check_walk_arguments("safe epsilon sampling", epsilon, minimum_lfs);
   const auto walked = walk_curve(
       lfs, [&](std::size_t c) { return Coverage_step(lfs, c, epsilon * (1 - safe_margin), minimum_lfs); });
-  std::vector<std::vector<double>> covered;
-  for (std::size_t c = 0; c < walked.size(); ++c) {
-    const Curve_component& component = lfs.curve().components[c];
-    const std::vector<double>& s = walked[c];
-    auto& parameters = covered.emplace_back();
-    for (std::size_t i = 0; i + 1 < s.size(); ++i) cover(lfs, c, s[i], s[i + 1], epsilon, minimum_lfs, parameters);
-    if (component.closed())
-      cover(lfs, c, s.back(), s.front() + piece_count(component), epsilon, minimum_lfs, parameters);
-    else
-      parameters.push_back(s.back());
-  }
-  return covered;
+  return split_intervals(lfs, walked, [&](std::size_t c, double u, double v, std::vector<double>& out) {
+    cover(lfs, c, u, v, epsilon, minimum_lfs, out);
+  });
 }
 
 // The interval [u, v]'s rho, as certify measures it: half its chord against its reach (the
@@ -307,8 +324,7 @@ void cover_rho(const Local_feature_size& lfs, std::size_t c, double u, double v,
   cover_rho(lfs, c, middle, v, target, minimum_lfs, out);
 }
 
-// The worst epsilon of the intervals between adjacent samples (each searched as `cover`
-// searches one).
+// The worst epsilon of the intervals between adjacent samples.
 double worst_epsilon(const Local_feature_size& lfs, std::size_t c, const std::vector<double>& parameters,
                      double minimum_lfs) {
   const Curve_component& component = lfs.curve().components[c];
@@ -316,11 +332,7 @@ double worst_epsilon(const Local_feature_size& lfs, std::size_t c, const std::ve
   const std::size_t intervals = component.closed() ? parameters.size() : parameters.size() - 1;
   for (std::size_t i = 0; i < intervals; ++i) {
     const double u = parameters[i], v = i + 1 < parameters.size() ? parameters[i + 1] : parameters[0] + piece_count(component);
-    const Point pu = component.point(u), pv = component.point(v);
-    worst = std::max(worst, maximize_along(lfs, c, u, v, [&](double s) {
-                              const Point p = component.point(s);
-                              return relative_distance(std::min(distance(p, pu), distance(p, pv)), lfs.at(c, s), minimum_lfs);
-                            }).value);
+    worst = std::max(worst, interval_epsilon(lfs, c, u, v, minimum_lfs).value);
   }
   return worst;
 }
@@ -457,17 +469,9 @@ Sample safe_rho_sampling(const Local_feature_size& lfs, double rho, double minim
   check_walk_arguments("safe rho sampling", rho, minimum_lfs);
   const auto walked =
       walk_curve(lfs, [&](std::size_t c) { return Rho_step(lfs, c, rho * (1 - safe_margin), minimum_lfs); });
-  std::vector<std::vector<double>> covered;
-  for (std::size_t c = 0; c < walked.size(); ++c) {
-    const Curve_component& component = lfs.curve().components[c];
-    const std::vector<double>& s = walked[c];
-    auto& parameters = covered.emplace_back();
-    for (std::size_t i = 0; i + 1 < s.size(); ++i) cover_rho(lfs, c, s[i], s[i + 1], rho, minimum_lfs, parameters);
-    if (component.closed())
-      cover_rho(lfs, c, s.back(), s.front() + piece_count(component), rho, minimum_lfs, parameters);
-    else
-      parameters.push_back(s.back());
-  }
+  const auto covered = split_intervals(lfs, walked, [&](std::size_t c, double u, double v, std::vector<double>& out) {
+    cover_rho(lfs, c, u, v, rho, minimum_lfs, out);
+  });
   return assemble(lfs, covered, minimum_lfs);
 }
 

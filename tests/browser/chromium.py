@@ -5,6 +5,7 @@ As root (CI) Chromium needs --no-sandbox; /dev/shm is small in containers, hence
 kept so that a test can fail on any error the page logged.
 """
 import pathlib
+import sys
 import time
 
 from selenium import webdriver
@@ -54,3 +55,9 @@ def wait_until(condition, what, seconds=10):
             return value
         time.sleep(0.05)
     raise AssertionError(f"timed out waiting for {what}")
+
+
+def finish(failures):
+    """The closing line every shell test prints, and the exit status: 0 if nothing failed."""
+    print(f"{'0' if failures else '1'} passed, {len(failures)} failed")
+    sys.exit(1 if failures else 0)

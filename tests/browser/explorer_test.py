@@ -181,8 +181,7 @@ def main():
         large_run(driver)
     finally:
         driver.quit()
-    print(f"{'0' if FAILURES else '1'} passed, {len(FAILURES)} failed")
-    sys.exit(1 if FAILURES else 0)
+    chromium.finish(FAILURES)
 
 
 if __name__ == "__main__":
