@@ -25,7 +25,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
 
-from explorer import write_explorer  # noqa: E402  (beside this script)
+from breakdown import breakdown_intervals, fmt_breakdown  # noqa: E402  (beside this script)
+from explorer import write_explorer  # noqa: E402
 
 STATUS_COLOURS = {"ok": "#4c9a2a", "failed": "#f0a030", "invalid-output": "#8c564b", "crashed": "#d62728",
                   "timeout": "#7b4ea3"}
@@ -415,6 +416,48 @@ def write_breakdown_csv(path, tables):
                 for start, n, exact in bins:
                     out.writerow([measure, algorithm, f"{start:.2f}", f"{start + BIN:.2f}", n, exact,
                                   f"{100 * exact / n:.1f}"])
+
+
+BREAKDOWN_SUITES = ("breakdown", "certify")  # smooth closed curves over a range of measured epsilons
+
+
+def breakdown_table(run, theorems, csv_path):
+    """The empirical breakdown of every algorithm with ground truth (breakdown.py), as an HTML section;
+    also written to csv_path. Empty without a breakdown suite."""
+    rows = [r for r in run.rows if r["suite"] in BREAKDOWN_SUITES]
+    out = []
+    for algorithm in run.algorithms:
+        cases = [(number(r["epsilon"]), bool(r["_exact"])) for r in rows if r["algorithm"] == algorithm
+                 and r["_exact"] is not None and math.isfinite(number(r["epsilon"]) or math.inf)]
+        if len(cases) >= 10:
+            out.append((algorithm, cases, breakdown_intervals(cases)))
+    if not out:
+        return ""
+    with open(csv_path, "w", newline="", encoding="utf-8") as f:
+        table = csv.writer(f)
+        table.writerow(["algorithm", "cases", "exact", "smallest_epsilon", "largest_epsilon", "proven_bound"]
+                       + [f"{name}_{int(100 * q)}" for q in (0.95, 0.5) for name in ("breakdown", "low", "high")])
+        for algorithm, cases, found in out:
+            table.writerow([algorithm, len(cases), sum(e for _, e in cases), min(e for e, _ in cases),
+                            max(e for e, _ in cases), theorems.get(algorithm, "")]
+                           + [v for q in (0.95, 0.5) for v in found[q]])
+    html_rows = []
+    for algorithm, cases, found in out:
+        smallest, largest = min(e for e, _ in cases), max(e for e, _ in cases)
+        bound = theorems.get(algorithm)
+        html_rows.append(f"<tr><td>{esc(algorithm)}</td><td class=n>{len(cases)}</td>"
+                         f"<td class=n>{esc(fmt_share(wilson([e for _, e in cases])))}</td>"
+                         + "".join(f"<td class=n>{esc(fmt_breakdown(found[q], smallest, largest))}</td>"
+                                   for q in (0.95, 0.5))
+                         + f"<td class=n>{esc(fmt(bound, '.3g')) if bound else '–'}</td></tr>")
+    suites = ", ".join(s for s in BREAKDOWN_SUITES if s in run.suites)
+    return ("<h2 id=breakdown>Empirical breakdown</h2><table><tr><th>algorithm</th><th>cases</th><th>exact</th>"
+            "<th>exact rate below 95 % from epsilon</th><th>below 50 % from epsilon</th><th>proven bound</th></tr>"
+            + "".join(html_rows) + "</table>"
+            f"<p class=note>Over the smooth closed curves of suite {esc(suites)}: the measured epsilon at which the exact-reconstruction rate, fitted as a logistic "
+            "function of it, drops below 95 % and below 50 %, with its percentile-bootstrap 95 % interval over the "
+            "cases; '&gt;' or '&lt;' where the fitted rate crosses beyond the epsilons measured. The proven bound is "
+            "the theorem's (survey: Guarantees as Sampling Conditions). Written as breakdown-thresholds.csv.</p>")
 
 
 def make_charts(run, charts_dir):
@@ -824,6 +867,7 @@ def report_html(run, charts, out_dir, csv_path):
                          + "<h3>True topology (one manifold per true curve, whatever points are kept)</h3>"
                          + topology_matrix + MATRIX_NOTE)
         parts.append(survey_table(run))
+        parts.append(breakdown_table(run, read_theorems(out_dir / "theorems.csv"), out_dir / "breakdown-thresholds.csv"))
         parts.append("<h2>Overview</h2>" + chart_figures(charts[None]))
         for suite in run.suites:
             rows = run.suite_rows(suite)

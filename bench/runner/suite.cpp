@@ -1,6 +1,8 @@
 #include "bench/runner/suite.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
@@ -44,6 +46,20 @@ std::vector<std::string_view> smooth_closed_curves(std::size_t count) {
   for (std::size_t seed = 1; seed < count; ++seed)
     curves.push_back(stored("fourier:seed=" + std::to_string(seed) + std::string(complexities[seed % 3])));
   return curves;
+}
+
+// Each curve at its own requested epsilon, spread evenly over [0.05, 3) by the golden-ratio
+// sequence, so that the measured epsilons cover the range without levels (suite `breakdown`).
+std::vector<std::string_view> spread_over_epsilon(const std::vector<std::string_view>& curves) {
+  std::vector<std::string_view> inputs;
+  double fraction = 0.5;
+  for (const std::string_view curve : curves) {
+    fraction = std::fmod(fraction + 0.6180339887498949, 1.0);
+    char epsilon[16];
+    std::snprintf(epsilon, sizeof epsilon, "%.3f", 0.05 + 2.95 * fraction);
+    inputs.push_back(stored(std::string(curve) + "|epsilon=" + epsilon));
+  }
+  return inputs;
 }
 
 // A share per cell rests on 30 instances in the default suites, so that it carries a
@@ -211,6 +227,11 @@ const std::vector<Suite>& table() {
        .inputs = seeded("fourier:seed=#,harmonics=8,amplitude=0.6,decay=1|epsilon={}", 1, 30),
        .variable = "epsilon",
        .levels = {"0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.8", "1"}},
+      {.name = "breakdown",
+       .description = "Empirical breakdown as numbers: 1,000 smooth closed curves of three complexities, each at "
+                      "its own epsilon between 0.05 and 3 (the theorems stop below 0.5, the algorithms from about 1); the report fits each algorithm's exact rate against the "
+                      "measured epsilon (survey: Guarantees as Sampling Conditions)",
+       .inputs = spread_over_epsilon(smooth_closed_curves(1000))},
       {.name = "smoke",
        .description = "Two circles, for tests: a dense and a coarse sampling",
        .inputs = {"circle:r=1|epsilon={}"},
@@ -225,7 +246,7 @@ const std::vector<Suite>& table() {
        .description = "Every experiment suite at its default size",
        .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "open-curves", "multiple-curves",
                  "intersecting", "sharp-corners", "rounded-corners", "manifold", "corner-family", "drawings",
-                 "qualitative", "runtime", "runtime-large", "certify", "glyphs"}},
+                 "qualitative", "runtime", "runtime-large", "certify", "breakdown", "glyphs"}},
       {.name = "full",
        .description = "The generated experiments on 200 instances per cell, for rates with narrow intervals "
                       "(under an hour on 2 cores; shard it for more)",
