@@ -20,6 +20,7 @@
 #include "bench/cli/run_command.h"
 #include "bench/cli/sample_command.h"
 #include "bench/cli/slurm_command.h"
+#include "bench/cli/tightness_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"curvebench: planar curve reconstruction on exact geometry"};
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   curvebench::cli::add_annotate_command(app);
   curvebench::cli::add_make_input_command(app);
   curvebench::cli::add_slurm_command(app);
+  curvebench::cli::add_tightness_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -590,4 +590,10 @@ Sample random_sampling(const Local_feature_size& lfs, std::size_t n, std::uint64
   return assemble(lfs, parameters, 0);
 }
 
+Sample sampling_at(const Local_feature_size& lfs, const std::vector<std::vector<double>>& parameters, double minimum_lfs) {
+  if (parameters.size() > lfs.curve().components.size())
+    throw std::invalid_argument("sampling_at: more parameter lists than the curve's components");
+  return assemble(lfs, parameters, minimum_lfs);
+}
+
 }  // namespace curvebench::geometry

@@ -90,4 +90,10 @@ Sample with_crossing_samples(const Local_feature_size& lfs, Sample sample);
 // n points independently uniform in arc length over the whole curve (Seeded_random).
 Sample random_sampling(const Local_feature_size& lfs, std::size_t n, std::uint64_t seed);
 
+// The points at the given parameters of each component (parameters[c], increasing along
+// component c; a closed component's taken modulo its piece count), with their ground truth:
+// a sampling placed by hand, as the tightness search moves samples (certify/tightness_search.h).
+// Throws std::invalid_argument if there are more lists than components.
+Sample sampling_at(const Local_feature_size& lfs, const std::vector<std::vector<double>>& parameters, double minimum_lfs);
+
 }  // namespace curvebench::geometry
