@@ -215,6 +215,28 @@ TEST(Suites, EveryDefaultCellHasThirtyInstances) {
   }
 }
 
+// The breakdown suite: 1,000 distinct smooth closed curves (the sampling suites' own), each
+// at its own requested epsilon, spread evenly over [0.05, 3): every tenth of the range
+// holds 100 of them, give or take the golden-ratio sequence's discrepancy.
+TEST(Suites, BreakdownSpreadsOneThousandCurvesOverEpsilon) {
+  const std::vector<Suite_case> cases = suite_cases(*find_suite("breakdown"));
+  ASSERT_EQ(cases.size(), 1000u);
+  std::set<std::string> curves;
+  std::map<int, std::size_t> per_tenth;
+  for (const Suite_case& c : cases) {
+    curves.insert(std::string(input_source(c.input)));
+    const std::string key = "|epsilon=";
+    const std::size_t at = c.input.find(key);
+    ASSERT_NE(at, std::string::npos) << c.input;
+    const double epsilon = std::stod(c.input.substr(at + key.size()));
+    ASSERT_TRUE(epsilon >= 0.05 && epsilon < 3) << c.input;
+    ++per_tenth[static_cast<int>((epsilon - 0.05) / 0.295)];
+  }
+  EXPECT_EQ(curves.size(), 1000u);
+  EXPECT_EQ(per_tenth.size(), 10u);
+  for (const auto& [tenth, count] : per_tenth) EXPECT_NEAR(static_cast<double>(count), 100, 5) << "tenth " << tenth;
+}
+
 // The generated families hold what their names say, measured on their sampled ground truth
 // with the project's own combinatorics (curve_topology) and exact predicates: each open
 // curve has two ends, each multi-curve input two closed curves (the nested ones nested),
