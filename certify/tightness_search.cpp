@@ -80,6 +80,12 @@ class Curve_search {
       const Epsilon_measure epsilon = measure_epsilon(lfs_, c.sample.points, 0);
       c.measured = epsilon.epsilon, c.worst = interval_at(c.sample, epsilon.where);
     }
+    // A closed component with fewer than three samples has no polygon to reconstruct (and
+    // no edge to measure rho on): too sparse to be a case. (The first rho search returned
+    // two points of two components, rho 0 over no edges.)
+    std::vector<std::size_t> per_component(lfs_.curve().components.size(), 0);
+    for (const auto& location : c.sample.locations) ++per_component[location.component];
+    if (std::ranges::any_of(per_component, [](std::size_t n) { return n < 3; })) return c;
     if (theorem_.uniformity_below &&
         !(measure_uniformity(c.sample.points, c.sample.edges).uniformity < *theorem_.uniformity_below))
       return c;
@@ -185,6 +191,7 @@ Tightness_result search_tightness(const algorithms::Algorithm& algorithm, const 
         failed = level, best = std::move(c);
         break;
       }
+      if (c.check.exact) result.largest_passed = std::max(result.largest_passed, c.measured);
       passed = level;
     }
     if (failed == 0) continue;
@@ -192,8 +199,12 @@ Tightness_result search_tightness(const algorithms::Algorithm& algorithm, const 
     for (int step = 0; step < 5 && passed > 0 && !out_of_time(); ++step) {
       const double middle = std::sqrt(passed * failed);
       Curve_search::Candidate c = search.at_level(middle);
-      if (c.fails) failed = middle, best = std::move(c);
-      else passed = middle;
+      if (c.fails) {
+        failed = middle, best = std::move(c);
+      } else {
+        if (c.check.exact) result.largest_passed = std::max(result.largest_passed, c.measured);
+        passed = middle;
+      }
     }
     Tightness_case found{.curve = spec, .level = failed};
     // Steps 2 and 3 only where this curve's failure could beat the best found.

@@ -19,6 +19,7 @@
 //      along the curve by a random share of its interval, preferring the samples at the
 //      worst interval and at the wrong edges), kept when the case still fails and its
 //      measure does not grow.
+// A case has three samples or more on every component (closed: a polygon to reconstruct).
 // The measure is exact for the sample (certify/sampling_measure.h, true lfs, no floor);
 // the algorithm runs in this process (built-in algorithms only; a crash would end the
 // search, which `curvebench hunt` and the fuzz targets exist to find).
@@ -57,6 +58,9 @@ struct Tightness_result {
   Theorem theorem;
   std::optional<Tightness_case> best = {};  // the failing case of smallest measure
   std::size_t curves = 0, failing_curves = 0, evaluations = 0;
+  // The largest measure of a sampler level that met the hypotheses and passed: where no
+  // failure is found, the search saw none up to here.
+  double largest_passed = 0;
   double seconds = 0;
 };
 

@@ -66,6 +66,7 @@ nlohmann::json write_case(const std::filesystem::path& directory, const algorith
                                  {"curve", c.curve},              {"points", c.sample.size()},
                                  {"level", c.level},              {"samples_added", c.added},
                                  {"moves_kept", c.moved},         {"error", c.error},
+                                 {"largest_passed", result.largest_passed},
                                  {"curves", result.curves},       {"failing_curves", result.failing_curves},
                                  {"evaluations", result.evaluations}, {"seconds", result.seconds},
                                  {"directory", directory.string()}};
@@ -83,6 +84,7 @@ void run(const Tightness_command_options& o) {
     const algorithms::Algorithm& algorithm = chosen_algorithm(name);
     const certify::Tightness_result result = certify::search_tightness(algorithm, search);
     nlohmann::json record = {{"algorithm", algorithm.name}, {"bound", result.theorem.bound},
+                             {"largest_passed", result.largest_passed},
                              {"curves", result.curves},     {"failing_curves", result.failing_curves},
                              {"evaluations", result.evaluations}, {"seconds", result.seconds}};
     if (result.best) record = write_case(o.output / (std::string(algorithm.name) + (o.rho ? "-rho" : "")), algorithm, result);
@@ -90,7 +92,8 @@ void run(const Tightness_command_options& o) {
     if (o.json) continue;
     std::cout << std::left << std::setw(21) << algorithm.name << std::setw(9) << certify::measure_name(search.measure)
               << std::setw(8) << std::setprecision(3) << result.theorem.bound << std::setw(20)
-              << (result.best ? std::to_string(result.best->measured).substr(0, 6) : std::string("none found"))
+              << (result.best ? std::to_string(result.best->measured).substr(0, 6)
+                              : "none <= " + std::to_string(result.largest_passed).substr(0, 5))
               << std::setw(8)
               << (result.best ? std::to_string(result.best->measured / result.theorem.bound).substr(0, 5) : std::string("-"))
               << std::setw(18) << (std::to_string(result.curves) + " (" + std::to_string(result.failing_curves) + ")")

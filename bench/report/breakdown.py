@@ -2,8 +2,9 @@
 rate drops below 95 % and below 50 % (survey: "Guarantees as Sampling Conditions" states each
 algorithm's proven bound; this measures where it actually stops working).
 
-The rate is fitted as a logistic function of the measured epsilon by maximum likelihood, and the
-breakdown at q is where the fit crosses q. Its 95 % interval is the percentile bootstrap over
+The rate is fitted as a logistic function of the logarithm of the measured epsilon (epsilon is a
+scale: the same step from 0.1 to 0.2 as from 1 to 2) by maximum likelihood, and the breakdown at q
+is where the fit crosses q. Its 95 % interval is the percentile bootstrap over
 cases (whole cases resampled with a fixed seed, so that a report is repeatable), which is
 consistent for a smooth maximum-likelihood estimate.
 Why not a shape-free fit: the isotonic (non-increasing) regression was tried first, but its
@@ -12,7 +13,8 @@ interval covered the true breakdown in 12 of 20 repeats. The logistic model is a
 the report's binned chart beside the table shows where it fits.
 A crossing outside the measured epsilons is censored: '< smallest' or '> largest'. Where exact and
 inexact cases are perfectly separated the fit is a step, and every crossing is the middle of the
-gap; a tiny ridge keeps the fit finite when the cases are all one kind.
+gap (in the logarithm: their geometric mean); a tiny ridge keeps the fit finite when the cases
+are all one kind.
 """
 import math
 
@@ -58,9 +60,9 @@ def crossings(beta, centre, scale, smallest, largest, levels):
 
 
 def breakdown_intervals(cases, levels=LEVELS, resamples=RESAMPLES, seed=1):
-    """{q: (estimate, low, high)} over cases [(measured epsilon, exact)]: the epsilon where the fitted
-    exact rate crosses q and its percentile-bootstrap 95 % interval; -inf / inf when censored."""
-    x = numpy.array([e for e, _ in cases], dtype=float)
+    """{q: (estimate, low, high)} over cases [(measured epsilon > 0, exact)]: the epsilon where the fitted
+    exact rate crosses q and its percentile-bootstrap 95 % interval; 0 / inf when censored below / above."""
+    x = numpy.log(numpy.array([e for e, _ in cases], dtype=float))
     y = numpy.array([float(bool(exact)) for _, exact in cases])
     centre, scale = x.mean(), (x.std() or 1.0)
     counts = numpy.random.default_rng(seed).multinomial(len(cases), numpy.full(len(cases), 1 / len(cases)),
@@ -76,12 +78,12 @@ def breakdown_intervals(cases, levels=LEVELS, resamples=RESAMPLES, seed=1):
     separated = numpy.isfinite(last_exact) & numpy.isfinite(first_inexact) & (last_exact < first_inexact)
     for q in levels:
         at[q] = numpy.where(separated, (last_exact + first_inexact) / 2, at[q])
-    return {q: (float(at[q][0]), *(float(v) for v in numpy.percentile(at[q][1:], [2.5, 97.5], method="lower")))
+    return {q: tuple(float(numpy.exp(v)) for v in (at[q][0], *numpy.percentile(at[q][1:], [2.5, 97.5], method="lower")))
             for q in levels}
 
 
 def fmt_breakdown(interval, smallest, largest):
     """'0.43 [0.41, 0.46]'; a censored value reads '< SMALLEST' or '> LARGEST'."""
-    text = [f"> {largest:.2f}" if v == math.inf else f"< {smallest:.2f}" if v == -math.inf else f"{v:.2f}"
+    text = [f"> {largest:.2f}" if v == math.inf else f"< {smallest:.2f}" if v == 0 else f"{v:.2f}"
             for v in interval]
     return f"{text[0]} [{text[1]}, {text[2]}]"

@@ -216,7 +216,7 @@ TEST(Suites, EveryDefaultCellHasThirtyInstances) {
 }
 
 // The breakdown suite: 1,000 distinct smooth closed curves (the sampling suites' own), each
-// at its own requested epsilon, spread evenly over [0.05, 3): every tenth of the range
+// at its own requested epsilon, spread evenly over [0.05, 2): every tenth of the range
 // holds 100 of them, give or take the golden-ratio sequence's discrepancy.
 TEST(Suites, BreakdownSpreadsOneThousandCurvesOverEpsilon) {
   const std::vector<Suite_case> cases = suite_cases(*find_suite("breakdown"));
@@ -229,8 +229,8 @@ TEST(Suites, BreakdownSpreadsOneThousandCurvesOverEpsilon) {
     const std::size_t at = c.input.find(key);
     ASSERT_NE(at, std::string::npos) << c.input;
     const double epsilon = std::stod(c.input.substr(at + key.size()));
-    ASSERT_TRUE(epsilon >= 0.05 && epsilon < 3) << c.input;
-    ++per_tenth[static_cast<int>((epsilon - 0.05) / 0.295)];
+    ASSERT_TRUE(epsilon >= 0.05 && epsilon < 2) << c.input;
+    ++per_tenth[static_cast<int>((epsilon - 0.05) / 0.195)];
   }
   EXPECT_EQ(curves.size(), 1000u);
   EXPECT_EQ(per_tenth.size(), 10u);

@@ -57,6 +57,7 @@ TEST(Tightness, NnCrustFailsOnlyAboveItsBound) {
   const algorithms::Algorithm& nn_crust = *algorithms::find_algorithm("nn-crust");
   const Tightness_result result = search_tightness(nn_crust, {.seconds = 60, .seed = 3, .max_curves = 4, .moves = 10});
   EXPECT_EQ(result.curves, 4u);
+  EXPECT_GE(result.largest_passed, 1.0 / 3 * 0.8);  // the ladder's first level passed, measured in (0.8 b, b]
   ASSERT_TRUE(result.best);
   const Tightness_case& c = *result.best;
   EXPECT_GE(c.measured, 1.0 / 3);
@@ -70,11 +71,12 @@ TEST(Tightness, NnCrustFailsOnlyAboveItsBound) {
 TEST(Tightness, RhoSearchForHnnCrust) {
   const algorithms::Algorithm& hnn_crust = *algorithms::find_algorithm("hnn-crust");
   const Tightness_result result =
-      search_tightness(hnn_crust, {.measure = Measure::rho, .seconds = 60, .max_curves = 3, .moves = 5});
+      search_tightness(hnn_crust, {.measure = Measure::rho, .seconds = 60, .max_curves = 12, .moves = 5});
   EXPECT_EQ(result.theorem.bound, 0.9);
   if (!result.best) return;  // no failure on these curves: nothing below the bound either
   const Tightness_case& c = *result.best;
   EXPECT_GE(c.measured, 0.9);
+  EXPECT_GE(c.sample.size(), 3u);
   const Local_feature_size lfs(geometry::make_curve(c.curve));
   EXPECT_EQ(measure_rho(lfs, c.sample, 0).rho, c.measured);
   EXPECT_FALSE(check_reconstruction(hnn_crust, c.sample).exact);

@@ -2,11 +2,11 @@
 """Checks bench/report/breakdown.py against independent oracles:
 - the fit solves the likelihood equations: fitted rates sum to the exact cases, overall and
   weighted by epsilon (what a maximum-likelihood logistic fit must satisfy), on random inputs;
-- a step (exact exactly below t): every breakdown and interval end is within the gap between
-  the last exact and the first inexact case, or the gap a resample leaves;
-- censoring: all exact is '> largest', none exact '< smallest';
-- a logistic rate with a closed-form breakdown, m + s ln(1/q - 1): estimates near it, and the
-  95 % interval covering it in at least 16 of 20 seeded repeats at both levels.
+- a step (exact exactly below t): the breakdown is the geometric mean of the last exact and the
+  first inexact epsilon, and every interval end is near t (the gap a resample leaves);
+- censoring: all exact is inf ('> largest'), none exact 0 ('< smallest');
+- a rate logistic in ln epsilon with a closed-form breakdown, m (1/q - 1)^s: estimates near it, and
+  the 95 % interval covering it in at least 16 of 20 seeded repeats at both levels.
 """
 import math
 import pathlib
@@ -42,24 +42,24 @@ for trial in range(200):
 for t in (0.2, 0.33, 0.71):
     cases = [(i / 100, i / 100 < t) for i in range(5, 101)]
     for q, interval in breakdown_intervals(cases, levels=(0.95, 0.5, 0.05), resamples=50).items():
-        check(abs(interval[0] - (t - 0.005)) < 1e-12, f"step at {t}, q {q}: estimate {interval[0]}")
+        check(abs(interval[0] - math.sqrt((t - 0.01) * t)) < 1e-12, f"step at {t}, q {q}: estimate {interval[0]}")
         check(all(t - 0.05 < v < t + 0.04 for v in interval), f"step at {t}, q {q}: {interval}")
 everywhere = [(e / 10, True) for e in range(1, 11)]
 check(breakdown_intervals(everywhere, resamples=20)[0.5] == (math.inf,) * 3, "all exact is not '> largest'")
 nowhere = [(e / 10, False) for e in range(1, 11)]
-check(breakdown_intervals(nowhere, resamples=20)[0.95] == (-math.inf,) * 3, "none exact is not '< smallest'")
+check(breakdown_intervals(nowhere, resamples=20)[0.95] == (0.0,) * 3, "none exact is not '< smallest'")
 
-# p(e) = 1 / (1 + exp((e - m) / s)) drops below q at e = m + s ln(1/q - 1).
-m, s = 0.5, 0.04
+# p(e) = 1 / (1 + exp((ln e - ln m) / s)) drops below q at e = m (1/q - 1)^s.
+m, s = 0.5, 0.08
 covered = {0.95: 0, 0.5: 0}
 for repeat in range(20):
     rng = random.Random(100 + repeat)
     cases = []
     for _ in range(1000):
         e = rng.uniform(0.05, 1.0)
-        cases.append((e, rng.random() < 1 / (1 + math.exp((e - m) / s))))
+        cases.append((e, rng.random() < 1 / (1 + math.exp((math.log(e) - math.log(m)) / s))))
     for q, (estimate, low, high) in breakdown_intervals(cases, resamples=200, seed=repeat).items():
-        truth = m + s * math.log(1 / q - 1)
+        truth = m * (1 / q - 1) ** s
         check(abs(estimate - truth) < 0.03, f"logistic, q {q}: estimate {estimate:.3f}, truth {truth:.3f}")
         check(low <= estimate <= high, f"logistic, q {q}: estimate {estimate} outside [{low}, {high}]")
         covered[q] += low <= truth <= high

@@ -145,6 +145,11 @@ TEST(CurveSpec, GlyphStarExpandsToEveryGlyph) {
   EXPECT_NE(std::find(specs.begin(), specs.end(), "glyph:A"), specs.end());
   EXPECT_NE(std::find(specs.begin(), specs.end(), "glyph:U+003A"), specs.end());  // ':' itself
   EXPECT_EQ(make_curve("glyph:U+003A").components.size(), 2u);
+  // '|' is the benchmark input name's separator ("glyph:||epsilon=0.4" named an empty glyph
+  // and failed for every algorithm in the full glyph sweep): no expanded name holds one.
+  EXPECT_NE(std::find(specs.begin(), specs.end(), "glyph:U+007C"), specs.end());
+  EXPECT_TRUE(std::none_of(specs.begin(), specs.end(), [](const std::string& spec) { return spec.find('|') != std::string::npos; }));
+  EXPECT_EQ(make_curve("glyph:U+007C").components.size(), 1u);
   const std::string font = default_glyph_font.string();
   EXPECT_EQ(expand_curve_specs("glyph:" + font + ":*").size(), specs.size());
   EXPECT_EQ(expand_curve_specs("glyph:" + font + ":*")[0].rfind("glyph:" + font + ":", 0), 0u);
