@@ -1,5 +1,6 @@
 #include "bench/cli/sample_files.h"
 
+#include <algorithm>
 #include <fstream>
 #include <utility>
 
@@ -20,6 +21,28 @@ void write_lines(const std::filesystem::path& file, const Range& values, Write w
   std::ofstream out(file);
   for (const auto& v : values) write(out, v) << '\n';
   if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+// Edge files are canonical (i < j), but an edge stands for the interval from its first
+// point forward along the curve to its second (measure_rho reads it so): turn each edge of
+// a closed component whose points are neighbours the other way round along it, so that its
+// interval holds no other sample. Without this, `measure` took a closing edge (first, last)
+// as the whole loop but one gap and over-estimated rho (1.10 for a sampling of rho 0.98).
+void orient_along_the_curve(const geometry::Local_feature_size& lfs, geometry::Sample& sample) {
+  const auto& components = lfs.curve().components;
+  std::vector<std::vector<std::pair<double, std::size_t>>> along(components.size());
+  for (std::size_t i = 0; i < sample.size(); ++i) along[sample.locations[i].component].emplace_back(sample.locations[i].parameter, i);
+  std::vector<std::size_t> position(sample.size());
+  for (auto& points : along) {
+    std::sort(points.begin(), points.end());
+    for (std::size_t k = 0; k < points.size(); ++k) position[points[k].second] = k;
+  }
+  for (auto& [i, j] : sample.edges) {
+    const std::size_t c = sample.locations[i].component;
+    if (c != sample.locations[j].component || !components[c].closed()) continue;
+    const std::size_t count = along[c].size();
+    if ((position[i] + 1) % count != position[j] && (position[j] + 1) % count == position[i]) std::swap(i, j);
+  }
 }
 
 }  // namespace
@@ -83,6 +106,7 @@ geometry::Sample read_sample(const geometry::Local_feature_size& lfs, const std:
     sample.lfs.push_back(lfs.at(location.component, location.parameter));
     sample.labels.push_back(geometry::Sample_label::curve_point);
   }
+  orient_along_the_curve(lfs, sample);
   return sample;
 }
 
