@@ -198,7 +198,12 @@ Tightness_result search_tightness(const algorithms::Algorithm& algorithm, const 
     ++result.failing_curves;
     for (int step = 0; step < 5 && passed > 0 && !out_of_time(); ++step) {
       const double middle = std::sqrt(passed * failed);
-      Curve_search::Candidate c = search.at_level(middle);
+      Curve_search::Candidate c;
+      try {
+        c = search.at_level(middle);
+      } catch (const std::invalid_argument&) {
+        break;
+      }
       if (c.fails) {
         failed = middle, best = std::move(c);
       } else {
