@@ -9,8 +9,8 @@ cases (whole cases resampled with a fixed seed, so that a report is repeatable),
 consistent for a smooth maximum-likelihood estimate.
 Why not a shape-free fit: the isotonic (non-increasing) regression was tried first, but its
 bootstrap is known to be inconsistent (cube-root asymptotics), and on simulated data its 95 %
-interval covered the true breakdown in 12 of 20 repeats. The logistic model is an assumption;
-the report's binned chart beside the table shows where it fits.
+interval covered the true breakdown in 12 of 20 repeats. The logistic model is an assumption:
+where the rate is not monotone its figure is a poor summary (a wide interval says so).
 A crossing outside the measured epsilons is censored: '< smallest' or '> largest'. Where exact and
 inexact cases are perfectly separated the fit is a step, and every crossing is the middle of the
 gap (in the logarithm: their geometric mean); a tiny ridge keeps the fit finite when the cases
@@ -22,7 +22,7 @@ import numpy
 
 LEVELS = (0.95, 0.5)
 RESAMPLES = 400
-RIDGE = 1e-6  # per case, on the intercept and the slope of the standardised epsilon
+RIDGE = 1e-6  # per case, on the intercept and the slope of the standardised ln epsilon
 
 
 def logistic_fits(x, y, weights):
