@@ -38,6 +38,9 @@ class Error_bounded_double {
  public:
   Error_bounded_double(double exact) : value_(exact), error_(0) {}  // NOLINT: inputs are exact
 
+  // A value known to lie within `error` of the exact one.
+  static Error_bounded_double with_error(double value, double error) { return {value, error}; }
+
   double value() const { return value_; }
   double error() const { return error_; }
 
@@ -83,6 +86,28 @@ template <class NT>
 Vector2<NT> difference(const Point& a, const Point& b) {
   return {NT(a.x()) - NT(b.x()), NT(a.y()) - NT(b.y())};
 }
+// An input coordinate times 2^-e as a filter's number: exact, unless the product is
+// subnormal and lost bits, which then count as its error. A homogeneous predicate has the
+// sign at scaled inputs that it has at the inputs, and its filters, evaluated where the
+// coordinates are near 1, neither overflow nor underflow where the inputs are huge.
+template <class NT>
+NT scaled(double v, int e);
+template <>
+inline Error_bounded_double scaled(double v, int e) {
+  const double s = std::ldexp(v, -e);
+  return Error_bounded_double::with_error(s, std::ldexp(s, e) == v ? 0.0 : 0x1p-1074);
+}
+template <>
+inline CGAL::Interval_nt_advanced scaled(double v, int e) {  // under upward rounding
+  const double s = std::ldexp(v, -e);
+  if (std::ldexp(s, e) == v) return s;
+  return {-(0x1p-1074 - s), s + 0x1p-1074};
+}
+template <class NT>
+Vector2<NT> scaled_difference(const Point& a, const Point& b, int e) {
+  return {scaled<NT>(a.x(), e) - scaled<NT>(b.x(), e), scaled<NT>(a.y(), e) - scaled<NT>(b.y(), e)};
+}
+
 template <class NT>
 NT dot(const Vector2<NT>& a, const Vector2<NT>& b) { return a.x * b.x + a.y * b.y; }
 template <class NT>

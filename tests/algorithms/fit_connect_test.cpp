@@ -122,6 +122,14 @@ TEST(FitConnect, CollinearPointsGiveThePath) {
   EXPECT_EQ(on_input(r, points), testing::canonical(expected));
   // Blended, collinear points are fitted by their line and stay on it.
   for (const Point& p : fit_connect_reconstruction(points).points) EXPECT_EQ(p.y(), 0);
+
+  // The same run at x = 2^1000 with spacing 2^-40: differences that no power of two brings
+  // near 1 without overflowing the coordinates, so the filters take them unscaled.
+  std::vector<Point> far;
+  for (const Point& p : points) far.emplace_back(0x1p+1000, std::ldexp(p.x(), -40));
+  const Reconstruction r_far = fit_connect_reconstruction(far, at_input);
+  expect_valid(r_far);
+  EXPECT_EQ(on_input(r_far, far), testing::canonical(expected));
 }
 
 TEST(FitConnect, CocircularPointsGiveTheCycle) {
@@ -323,6 +331,21 @@ RC_GTEST_PROP(FitConnect, ScalingByAPowerOfTwoCommutes, ()) {
     RC_ASSERT(a.points[i].x() * scale == b.points[i].x());
     RC_ASSERT(a.points[i].y() * scale == b.points[i].y());
   }
+}
+
+// The same law at the ends of double, where the filters work on differences scaled by a
+// power of two (fit_connect.cpp, filter_exponent): the decisions, i.e. the edges, agree.
+// Output points are constructions and may round differently near underflow.
+RC_GTEST_PROP(FitConnect, ScalingToTheEndsOfDoubleKeepsTheEdges, ()) {
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1000);
+  const int k = *rc::gen::oneOf(rc::gen::inRange(-960, -900), rc::gen::inRange(900, 1020));
+  const double delta = *rc::gen::element(0.0, 0.2);
+  const geometry::Local_feature_size lfs(geometry::random_fourier_curve(seed, {.harmonics = 3, .amplitude = 0.3}));
+  geometry::Sample sample = geometry::safe_epsilon_sampling(lfs, 0.3, geometry::default_minimum_lfs(lfs));
+  if (delta > 0) sample = geometry::with_lfs_noise(lfs, sample, delta, seed);
+  std::vector<Point> scaled;
+  for (const Point& p : sample.points) scaled.emplace_back(std::ldexp(p.x(), k), std::ldexp(p.y(), k));
+  RC_ASSERT(fit_connect_reconstruction(sample.points).edges == fit_connect_reconstruction(scaled).edges);
 }
 
 // Random small point sets, including grid points (collinear and cocircular ties): always a
