@@ -78,7 +78,7 @@ fuzz_target() {
   if ! { time "$binary" "${flags[@]}" -max_total_time="$seconds" "$new" "${seeds[@]}" >"$log" 2>&1; } 2>"$cpu"; then
     local finding
     finding=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -n 1)
-    echo "fuzz $name: FINDING ${finding:-(no input saved)}, log $log"
+    echo "fuzz $name: FINDING ${finding:-(no input saved)}, CPU $(<"$cpu"), log $log"
     tail -n 40 "$log" | sed 's/^/    /' >&2
     if [[ -n $finding ]]; then echo "    reproduce: $binary $finding" >&2; fi
     return 1
