@@ -51,6 +51,7 @@ struct Sampling_condition {
   std::optional<double> rho_below = {};           // HNN-Crust's reach-based rho-sampling
   std::optional<double> corner_angle_above = {};  // GathanG: sharp corners' opening angle, degrees
   std::optional<double> uniformity_below = {};    // Connect2D: longer / shorter edge at every point
+  bool covers_open_curves = false;                 // the bound holds for curves with ends too
 };
 
 // Reconstructs from distinct points (the registry's reconstruct() merges duplicates

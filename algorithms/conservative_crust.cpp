@@ -66,8 +66,10 @@ Algorithm conservative_crust_algorithm() {
       .parameters = {rho},
       .capabilities = {.non_uniform = Support::yes, .outliers = Support::yes, .open = Support::yes,
                        .multiple = Support::yes, .guarantee = true, .time_complexity = "O(n log n)"},
-      .condition = {.statement = "epsilon < 0.0625", .epsilon_below = 0.0625, .rho_below = {},
-                    .corner_angle_above = {}},
+      // The one guarantee the survey extends to curves with ends ("Feature Size Criteria
+      // Reconstruction": it reconstructs "collections of closed and open curves").
+      .condition = {.statement = "epsilon < 0.0625", .epsilon_below = 0.0625,
+                    .rho_below = {}, .corner_angle_above = {}, .uniformity_below = {}, .covers_open_curves = true},
       .reconstruct = edges_on_input([](std::span<const Point> points, const Parameter_values& values) {
         return conservative_crust_reconstruction(points, values[rho]);
       }),

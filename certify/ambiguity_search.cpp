@@ -2,7 +2,9 @@
 
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <tuple>
 
 #include "certify/sampling_measure.h"
 #include "geometry/curves/analytic_curves.h"
@@ -22,6 +24,10 @@ using geometry::Vector;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 double length(const Vector& v) { return std::sqrt(v.squared_length()); }
+
+// The mirror R: x -> -x. Exact in doubles, and so is every spline built from mirrored
+// points (rounding is symmetric under negation), which makes C2 = R(C1) bit for bit.
+Point mirrored(const Point& p) { return Point(-p.x(), p.y()); }
 
 // Solves the cyclic tridiagonal system  below[i] x[i-1] + diagonal[i] x[i] + above[i] x[i+1]
 // = rhs[i] (indices mod n, n >= 3) by Sherman-Morrison: the corner entries are a rank-one
@@ -124,10 +130,11 @@ std::vector<std::vector<std::size_t>> alternative_orders(std::span<const Point> 
 // ---- measuring ---------------------------------------------------------------------------
 
 // measure_ambiguity, giving up (invalid) as soon as one epsilon is at least `give_up_at`.
-Ambiguity_measure measure(const Ambiguity_case& c, double density, double give_up_at) {
+// A `mirror` case (C2 = R(C1) exactly) measures C1 only while searching: eps2 = eps1.
+Ambiguity_measure measure(const Ambiguity_case& c, double density, double give_up_at, bool mirror = false) {
   Ambiguity_measure m;
   if (order_edges(c.orders[0]) == order_edges(c.orders[1])) return m;
-  for (int k = 0; k < 2; ++k) {
+  for (int k = 0; k < (mirror ? 1 : 2); ++k) {
     Curve curve;
     try {
       curve = ambiguity_curve(c, k);
@@ -142,6 +149,7 @@ Ambiguity_measure measure(const Ambiguity_case& c, double density, double give_u
     m.where[k] = e.where;
     m.worst_point[k] = lfs.curve().components[e.where.component].point(e.where.parameter);
   }
+  if (mirror) m.epsilon[1] = m.epsilon[0], m.where[1] = m.where[0], m.worst_point[1] = mirrored(m.worst_point[0]);
   m.valid = true;
   return m;
 }
@@ -207,16 +215,147 @@ std::pair<Ambiguity_case, Ambiguity_measure> make_start(Seeded_random& random, s
   }
 }
 
+// ---- mirror-symmetric cases ------------------------------------------------------------
+//
+// A case with S = R(S) and C2 = R(C1) has eps2 = eps1, and its two orders differ as a
+// whole curve differs from its mirror image, not by a local swap of two points (the
+// general search's trap, where two swapped points merge and both curves fold).
+
+// mirror[i]: the index of R(points[i]) in S (i itself on the axis x = 0).
+struct Mirror_start {
+  Ambiguity_case c;
+  Ambiguity_measure m;
+  std::vector<std::size_t> mirror;
+};
+
+// The crossing of segments a0a1 and b0b1 at a0 + t (a1 - a0) = b0 + u (b1 - b0), if they
+// cross properly (0 < t, u < 1). Doubles: a start is an experiment's guess, checked later.
+std::optional<std::pair<double, double>> crossing(const Point& a0, const Point& a1, const Point& b0, const Point& b1) {
+  const Vector r = a1 - a0, q = b1 - b0, w = b0 - a0;
+  const double denominator = r.x() * q.y() - r.y() * q.x();
+  if (denominator == 0) return std::nullopt;
+  const double t = (w.x() * q.y() - w.y() * q.x()) / denominator, u = (w.x() * r.y() - w.y() * r.x()) / denominator;
+  if (!(t > 0 && t < 1 && u > 0 && u < 1)) return std::nullopt;
+  return std::pair{t, u};
+}
+
+double perimeter_of_chain(std::span<const Point> closed) {
+  double total = 0;
+  for (std::size_t i = 0; i < closed.size(); ++i) total += length(closed[(i + 1) % closed.size()] - closed[i]);
+  return total;
+}
+
+// Forces `c` onto the symmetric cases: each mirror pair to the mean of the one and the
+// other's mirror image, each axis point onto the axis, and both curves' knot factors to
+// their mean (edge k of order 2 is R of edge k of order 1).
+void symmetrize(Ambiguity_case& c, std::span<const std::size_t> mirror) {
+  for (std::size_t i = 0; i < mirror.size(); ++i) {
+    const std::size_t j = mirror[i];
+    if (j == i) {
+      c.points[i] = Point(0, c.points[i].y());
+    } else if (i < j) {
+      const Point a = c.points[i], b = mirrored(c.points[j]);
+      c.points[i] = Point((a.x() + b.x()) / 2, (a.y() + b.y()) / 2);
+      c.points[j] = mirrored(c.points[i]);
+    }
+  }
+  auto& [f1, f2] = c.log_knot_factors;
+  for (std::size_t k = 0; k < f1.size() && k < f2.size(); ++k) f1[k] = f2[k] = (f1[k] + f2[k]) / 2;
+  auto& [v1, v2] = c.via;
+  for (std::size_t e = 0; e < v1.size() && e < v2.size(); ++e) {
+    const Point b = mirrored(v2[e]);
+    v1[e] = Point((v1[e].x() + b.x()) / 2, (v1[e].y() + b.y()) / 2);
+    v2[e] = mirrored(v1[e]);
+  }
+}
+
+// Gives both curves of `c` a via point in the middle of each of its spline segments: nearly
+// the same curves, with twice the points to move.
+void add_via_points(Ambiguity_case& c) {
+  for (int k = 0; k < 2; ++k) {
+    std::vector<Point> via;
+    for (const auto& b : curve_controls(c, k))
+      via.push_back(Point((b[0].x() + 3 * b[1].x() + 3 * b[2].x() + b[3].x()) / 8,
+                          (b[0].y() + 3 * b[1].y() + 3 * b[2].y() + b[3].y()) / 8));
+    c.via[k] = std::move(via);
+    c.log_knot_factors[k].clear();
+  }
+}
+
+// A mirror start: S is where a random Fourier curve K crosses its mirror image R(K) (a
+// crossing x of K and R(K) has R(x) on both too), order 1 is S along K, order 2 is S
+// along R(K), i.e. R of order 1. Kept when it has `points` points (0: 6 to 20), the two
+// polygons differ, and the spline C1 through S is smooth and simple (then so is C2 =
+// R(C1)). K is drawn wild (large amplitude, shifted off the axis), so that it is far from
+// star-shaped: the crossings of a near-circle with its mirror image come in the same
+// order on both. Draws again until one is found (at most 10000 times).
+Mirror_start make_mirror_start(Seeded_random& random, std::size_t points, double density) {
+  for (int attempt = 0;; ++attempt) {
+    if (attempt == 10000) throw std::runtime_error("ambiguity search: no mirror start with two smooth simple curves found");
+    const auto curve_seed = static_cast<std::uint64_t>(random.uniform() * 0x1.0p53);
+    const geometry::Fourier_curve_parameters shape{.harmonics = 2 + static_cast<int>(below(random, 5)),
+                                                   .amplitude = random.uniform(0.5, 1.0), .decay = 1.2};
+    const Vector shift(random.uniform(-0.4, 0.4), 0);
+    Curve base;
+    try {
+      base = geometry::random_fourier_curve(curve_seed, shape);
+    } catch (const std::invalid_argument&) {
+      continue;  // too wild to be simple
+    }
+    std::vector<Point> k = base.components[0].polyline(2e-3 * base.components[0].length());
+    for (Point& p : k) p = p + shift;
+    const std::size_t m = k.size();
+    // Crossings as (position along K, point): segment i of K against segment j of R(K).
+    std::vector<std::pair<double, Point>> crossings;
+    for (std::size_t i = 0; i < m; ++i) {
+      const Point& a0 = k[i];
+      const Point& a1 = k[(i + 1) % m];
+      if ((a0.x() < 0) != (a1.x() < 0)) {  // K meets the axis: a point of S on it
+        const double t = a0.x() / (a0.x() - a1.x());
+        crossings.emplace_back(static_cast<double>(i) + t, Point(0, a0.y() + t * (a1.y() - a0.y())));
+      }
+      for (std::size_t j = 0; j < m; ++j) {
+        if (j == i) continue;
+        const auto hit = crossing(a0, a1, mirrored(k[j]), mirrored(k[(j + 1) % m]));
+        if (!hit) continue;
+        const Point x = a0 + hit->first * (a1 - a0);
+        if (!(x.x() > 0)) continue;  // its mirror image, found as the pair's other member
+        // x on K at i + t; R(x) on K at j + u (segment j of R(K) is R of segment j of K).
+        crossings.emplace_back(static_cast<double>(i) + hit->first, x);
+        crossings.emplace_back(static_cast<double>(j) + hit->second, mirrored(x));
+      }
+    }
+    const std::size_t n = crossings.size();
+    if (n < 6 || n > 20 || (points != 0 && n != points)) continue;
+    std::ranges::sort(crossings, {}, &std::pair<double, Point>::first);
+    Mirror_start start;
+    for (const auto& [position, x] : crossings) start.c.points.push_back(x);
+    // Near the axis, rounding can give a crossing twice: keep the points apart.
+    if (!separated(start.c.points, 1e-2 * perimeter_of_chain(k) / static_cast<double>(n))) continue;
+    for (const Point& p : start.c.points)
+      start.mirror.push_back(static_cast<std::size_t>(std::ranges::find(start.c.points, mirrored(p)) - start.c.points.begin()));
+    if (std::ranges::find(start.mirror, n) != start.mirror.end()) continue;  // exact by construction; never
+    start.c.orders[0].resize(n);
+    for (std::size_t i = 0; i < n; ++i) start.c.orders[0][i] = i, start.c.orders[1].push_back(start.mirror[i]);
+    if (!simple_polygon(start.c.points, start.c.orders[0])) continue;
+    start.m = measure(start.c, density, infinity, true);
+    if (start.m.valid) return start;
+  }
+}
+
 // Hill climbing from `c` for `evaluations` steps: one point moved (often the one nearest
 // the worst curve point), or every point and knot factor a little, or one knot factor; a
 // step is kept if it lowers max(eps1, eps2). The step size grows on success and shrinks
 // on failure; once it is tiny it is reset (larger trial steps around the local minimum).
 // Steps that bring two points closer than `separation` times the start's mean edge are
-// refused without a measurement (see Ambiguity_search_options::minimum_separation).
+// refused without a measurement (see Ambiguity_search_options::minimum_separation). With
+// a `mirror`, every step is symmetrized, so the case stays mirror-symmetric.
 std::pair<Ambiguity_case, Ambiguity_measure> climb(Ambiguity_case c, Ambiguity_measure m, Seeded_random& random,
-                                                    std::size_t evaluations, double density, double separation) {
+                                                    std::size_t evaluations, double density, double separation,
+                                                    std::span<const std::size_t> mirror = {}) {
   const std::size_t n = c.points.size();
-  for (auto& factors : c.log_knot_factors) factors.resize(n, 0.0);
+  const bool via = !c.via[0].empty();
+  for (auto& factors : c.log_knot_factors) factors.resize(via ? 2 * n : n, 0.0);
   const double scale = perimeter(c.points, c.orders[0]) / static_cast<double>(n);
   double step = 0.15 * scale;
   for (std::size_t e = 0; e < evaluations; ++e) {
@@ -224,22 +363,27 @@ std::pair<Ambiguity_case, Ambiguity_measure> climb(Ambiguity_case c, Ambiguity_m
     const int worse = m.epsilon[1] > m.epsilon[0] ? 1 : 0;
     const double kind = random.uniform();
     if (kind < 0.35) {
-      const std::size_t i = random.uniform() < 0.5 ? nearest_point(c.points, m.worst_point[worse]) : below(random, n);
-      next.points[i] = next.points[i] + in_disc(random, step);
+      // A sample, or (half the time, with via points) a via point of the worse curve.
+      std::vector<Point>& moved = via && random.uniform() < 0.5 ? next.via[worse] : next.points;
+      const std::size_t i = random.uniform() < 0.5 ? nearest_point(moved, m.worst_point[worse]) : below(random, moved.size());
+      moved[i] = moved[i] + in_disc(random, step);
     } else if (kind < 0.7) {
       for (Point& p : next.points) p = p + in_disc(random, step / 2);
+      for (auto& points : next.via)
+        for (Point& p : points) p = p + in_disc(random, step / 2);
       for (auto& factors : next.log_knot_factors)
         for (double& factor : factors) factor = std::clamp(factor + random.uniform(-1, 1) * step / scale, -2.0, 2.0);
     } else {
       const int k = random.uniform() < 0.5 ? worse : static_cast<int>(below(random, 2));
-      double& factor = next.log_knot_factors[k][below(random, n)];
+      double& factor = next.log_knot_factors[k][below(random, next.log_knot_factors[k].size())];
       factor = std::clamp(factor + random.uniform(-1, 1) * 2 * step / scale, -2.0, 2.0);
     }
+    if (!mirror.empty()) symmetrize(next, mirror);
     if (!separated(next.points, separation * scale)) {
       step *= 0.97;
       continue;
     }
-    const Ambiguity_measure tried = measure(next, density, m.max_epsilon());
+    const Ambiguity_measure tried = measure(next, density, m.max_epsilon(), !mirror.empty());
     if (tried.valid && tried.max_epsilon() < m.max_epsilon()) {
       c = std::move(next), m = tried;
       step = std::min(step * 1.3, 0.5 * scale);
@@ -322,15 +466,21 @@ Curve closed_spline_curve(std::span<const Point> points, std::span<const double>
 // ---- a case -------------------------------------------------------------------------------
 
 std::vector<Point> ordered_points(const Ambiguity_case& c, int k) {
+  const auto& via = c.via[k];
+  if (!via.empty() && via.size() != c.orders[k].size()) throw std::invalid_argument("ambiguity case: one via point per edge");
   std::vector<Point> points;
-  for (const std::size_t i : c.orders[k]) points.push_back(c.points.at(i));
+  for (std::size_t e = 0; e < c.orders[k].size(); ++e) {
+    points.push_back(c.points.at(c.orders[k][e]));
+    if (!via.empty()) points.push_back(via[e]);
+  }
   return points;
 }
 
 std::vector<double> knot_intervals(const Ambiguity_case& c, int k) {
   std::vector<double> h = centripetal_knot_intervals(ordered_points(c, k));
   const auto& factors = c.log_knot_factors[k];
-  if (!factors.empty() && factors.size() != h.size()) throw std::invalid_argument("ambiguity case: one knot factor per edge");
+  if (!factors.empty() && factors.size() != h.size())
+    throw std::invalid_argument("ambiguity case: one knot factor per interval");
   for (std::size_t i = 0; i < factors.size(); ++i) h[i] *= std::exp(factors[i]);
   return h;
 }
@@ -359,10 +509,23 @@ Ambiguity_search_result search_ambiguity(const Ambiguity_search_options& options
   for (std::size_t s = 0; s < options.count; ++s) {
     // Each start has its own stream, so start s is the same whatever `count` is.
     Seeded_random random(options.seed * 0x9E3779B97F4A7C15ull + s + 1);
-    const std::size_t n = options.points ? options.points : 6 + below(random, 11);
-    auto [start, start_measure] = make_start(random, n, options.search_density);
-    auto [c, m] = climb(std::move(start), start_measure, random, options.evaluations, options.search_density,
-                        options.minimum_separation);
+    Ambiguity_case c;
+    Ambiguity_measure m;
+    std::vector<std::size_t> mirror;
+    if (options.mirror) {
+      Mirror_start start = make_mirror_start(random, options.points, options.search_density);
+      c = std::move(start.c), m = start.m, mirror = std::move(start.mirror);
+    } else {
+      const std::size_t n = options.points ? options.points : 6 + below(random, 11);
+      std::tie(c, m) = make_start(random, n, options.search_density);
+    }
+    if (options.via_points) {
+      add_via_points(c);
+      if (options.mirror) symmetrize(c, mirror);
+      m = measure(c, options.search_density, infinity, options.mirror);
+    }
+    std::tie(c, m) = climb(std::move(c), m, random, options.evaluations, options.search_density,
+                           options.minimum_separation, mirror);
     const Ambiguity_measure final_measure = measure_ambiguity(c);  // at the default density
     result.start_results.push_back(final_measure.max_epsilon());
     result.evaluations += options.evaluations + 1;
@@ -427,6 +590,7 @@ Ambiguity_files write_ambiguity_case(const std::filesystem::path& directory, con
                      ",\n  \"max_epsilon\": " + format_number(m.max_epsilon()) + ",\n  \"lfs_error_bound\": " +
                      format_number(lfs_relative_error_bound) + ",\n  \"max_epsilon_upper\": " +
                      format_number(m.max_epsilon() / (1 - lfs_relative_error_bound)) +
+                     ",\n  \"via_points\": " + std::to_string(c.via[0].size() + c.via[1].size()) +
                      ",\n  \"seed\": " + std::to_string(seed) + ",\n  \"order_1\": " + json_list(c.orders[0]) +
                      ",\n  \"order_2\": " + json_list(c.orders[1]);
   for (const auto& [key, value] : extra) json += ",\n  \"" + key + "\": " + format_number(value);

@@ -17,6 +17,9 @@
 //   3. hill climbing over point positions and knot factors (deterministic from the seed)
 //      minimises max(eps1, eps2), rejecting any step where a curve crosses itself or
 //      has a cusp (a sharp point of its Local_feature_size).
+// Or (`mirror`) the search keeps S symmetric under the mirror R: x -> -x and C2 = R(C1),
+// starting from where a random curve crosses its mirror image: eps2 = eps1 throughout, and
+// the orders differ globally, as a curve differs from its mirror image.
 //
 // Not a proof: the lfs is an estimate (local_feature_size.h: converges from above,
 // measured maximum relative error 1.9e-4 at the default density, so a measured epsilon
@@ -71,12 +74,16 @@ struct Ambiguity_case {
   std::vector<Point> points;                       // S
   std::array<std::vector<std::size_t>, 2> orders;  // the cyclic order of S along C1, C2
   // Natural logarithms of the factors on each curve's centripetal knot intervals, one per
-  // edge of its order (edge k: order[k] -> order[k+1]); empty means all 0.
+  // interval between the points it interpolates (ordered_points); empty means all 0.
   std::array<std::vector<double>, 2> log_knot_factors;
+  // Points a curve passes through that are not samples, so that it can bend between two
+  // samples more freely than one spline segment: via[k][e] lies between orders[k][e] and
+  // orders[k][e+1]. Empty: none.
+  std::array<std::vector<Point>, 2> via;
 };
 
-// The points of S in curve k's order, its knot intervals, its curve and its polygon's edges
-// (canonical_edges form).
+// The points curve k interpolates in order (S in its order, each via point after its
+// sample), its knot intervals, its curve and its polygon's edges (canonical_edges form).
 std::vector<Point> ordered_points(const Ambiguity_case& c, int k);
 std::vector<double> knot_intervals(const Ambiguity_case& c, int k);
 std::vector<std::array<Point, 4>> curve_controls(const Ambiguity_case& c, int k);
@@ -111,6 +118,13 @@ struct Ambiguity_search_options {
   // tiny Z-fold there, which measures about 1.31 however the rest moves. Measured: 0.2
   // keeps out of it but ends higher (1.51 for 6 starts x 1500 steps, seed 0), so 0.
   double minimum_separation = 0;
+  // Give each curve a via point between every two consecutive samples (Ambiguity_case::via),
+  // placed at first on the curve, then moved by the climb like the samples.
+  bool via_points = false;
+  // Search mirror-symmetric cases only: S = R(S) and C2 = R(C1) for the mirror R: x -> -x,
+  // from the crossings of a random curve with its mirror image (`points`, if set, is then
+  // the exact size of S; otherwise 6 to 20).
+  bool mirror = false;
 };
 
 struct Ambiguity_search_result {

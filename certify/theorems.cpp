@@ -10,7 +10,8 @@ std::optional<Theorem> theorem_of(const algorithms::Algorithm& algorithm, Measur
   const std::optional<double>& bound =
       measure == Measure::rho ? algorithm.condition.rho_below : algorithm.condition.epsilon_below;
   if (!bound) return std::nullopt;
-  return Theorem{&algorithm, measure, *bound, algorithm.condition.uniformity_below};
+  return Theorem{&algorithm, measure, *bound, algorithm.condition.uniformity_below,
+                 algorithm.condition.covers_open_curves};
 }
 
 std::vector<Theorem> theorems() {

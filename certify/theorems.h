@@ -1,7 +1,7 @@
 // The sampling-condition theorems (survey, "Guarantees as Sampling Conditions"): for each
 // registered algorithm with a proven condition, "every epsilon-sampling (rho-sampling) of
-// a smooth closed curve below the bound is reconstructed exactly", and the verdict of one
-// experiment on it.
+// a smooth closed curve below the bound is reconstructed exactly" (of closed and open
+// curves, for Conservative Crust), and the verdict of one experiment on it.
 #pragma once
 
 #include <optional>
@@ -20,6 +20,7 @@ struct Theorem {
   Measure measure = Measure::epsilon;
   double bound = 0;  // the hypothesis: the measured epsilon (or rho) < bound
   std::optional<double> uniformity_below = {};  // and, if set, local uniformity u < this
+  bool covers_open_curves = false;  // stated for curves with ends too, not only closed ones
 };
 
 // The registry's algorithms with an epsilon bound, in registry order.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Certifies every theorem of the registry on COUNT cases each (default 10000) at 0.95 of
 # its bound, over the benchmark's smooth families in turn (--curves mixed: Fourier curves,
-# pairs side by side, nested pairs, rounded stars), and prints one table row per theorem:
+# pairs side by side, nested pairs, rounded stars, and open curves for the theorem that
+# covers them, Conservative Crust's), and prints one table row per theorem:
 # cases, passed, failures, inconclusive, hypothesis violations and the CPU time it took.
 # Not part of CI (10,000 cases of one theorem take minutes to an hour of CPU here).
 #   scripts/certify_theorems.sh [COUNT] [OUT_DIR]      e.g. scripts/certify_theorems.sh 10000 out/theorems

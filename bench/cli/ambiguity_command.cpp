@@ -25,6 +25,8 @@ void run(const Ambiguity_command_options& o) {
       {"starts", static_cast<double>(o.search.count)},
       {"evaluations", static_cast<double>(result.evaluations)},
       {"best_start", static_cast<double>(result.best_start)},
+      {"mirror", o.search.mirror ? 1.0 : 0.0},
+      {"via_points", o.search.via_points ? 1.0 : 0.0},
       {"seconds", seconds}};
   const certify::Ambiguity_files files =
       certify::write_ambiguity_case(o.output, result.best, result.measure, o.search.seed, extra);
@@ -66,6 +68,11 @@ void add_ambiguity_command(CLI::App& app) {
   command->add_option("--points", o->search.points, "Points per start (0: drawn from 6..16)")->capture_default_str();
   command->add_option("--seed", o->search.seed, "Seed of the search")->capture_default_str();
   command->add_option("--evaluations", o->search.evaluations, "Hill-climbing steps per start")->capture_default_str();
+  command->add_flag("--via-points", o->search.via_points,
+                    "Let each curve pass through a free point (not a sample) between every two samples");
+  command->add_flag("--mirror", o->search.mirror,
+                    "Search mirror-symmetric cases only (S = R(S), C2 = R(C1)), from where a random curve crosses its "
+                    "mirror image; --points is then the exact size of S");
   command->add_option("-o,--out", o->output, "Output directory for the best case")->capture_default_str();
   command->add_flag("--json", o->json, "Print the summary as JSON");
   command->callback([o] { run(*o); });

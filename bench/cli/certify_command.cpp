@@ -82,8 +82,9 @@ void add_certify_command(CLI::App& app) {
   add_algorithm_file_option(command);
   command->add_option("--curves", o->certify.curves,
                       "fourier (random smooth closed curves), multi (2 or 3 of them side by side), nested (one inside "
-                      "another), rounded (stars with rounded corners), mixed (the four in turn), svg or glyphs")
-      ->check(CLI::IsMember({"fourier", "multi", "nested", "rounded", "mixed", "svg", "glyphs"}))
+                      "another), rounded (stars with rounded corners), open (curves with ends, for a theorem that "
+                      "covers them), mixed (those the theorem is stated for, in turn), svg or glyphs")
+      ->check(CLI::IsMember({"fourier", "multi", "nested", "rounded", "open", "mixed", "svg", "glyphs"}))
       ->capture_default_str();
   command->add_option("--count", o->certify.count, "Number of cases")->capture_default_str();
   command->add_flag("--rho", o->rho, "Certify the theorem on rho (HNN-Crust's rho < 0.9), not on epsilon");

@@ -139,23 +139,32 @@ std::vector<Suite_case> certification_cases(const Certify_options& options, cons
   std::vector<std::string> sources;
   const std::uint64_t base = options.seed << 32;
   // The smooth generated families of the benchmark: one closed curve, two side by side,
-  // one inside another (a hole), and a star with every corner rounded.
+  // one inside another (a hole), a star with every corner rounded, and open curves (the
+  // open-curves suite's: a Fourier curve opened by a small gap, so that its ends nearly
+  // meet, or by half of it, and a spiral).
   const auto generated = [&](const std::string& family, std::size_t i) {
+    const std::string seed = std::to_string(base + i);
     const int harmonics = 1 + static_cast<int>(i % 8);
     if (family == "fourier") return fourier_source(base + i, harmonics);
     if (family == "multi") return fourier_source(base + 3 * i, harmonics, 2 + static_cast<int>(i % 2));
-    if (family == "nested") return "nested:seed=" + std::to_string(base + i) + ",separation=0.1";
-    return "star:seed=" + std::to_string(base + i) + ",angle=" + std::to_string(30 + 30 * (i % 3)) + ",rounding=0.05";
+    if (family == "nested") return "nested:seed=" + seed + ",separation=0.1";
+    if (family == "open")
+      return i % 3 == 2 ? "spiral:seed=" + seed : fourier_source(base + i, harmonics) + (i % 3 == 0 ? ",gap=0.1" : ",gap=0.5");
+    return "star:seed=" + seed + ",angle=" + std::to_string(30 + 30 * (i % 3)) + ",rounding=0.05";
   };
-  // A theorem about one curve (an algorithm that reconstructs one: Connect2D) is not
-  // tested on several.
+  // A theorem is tested on the families it is stated for: several curves only for an
+  // algorithm that reconstructs several (not Connect2D), open curves only where the
+  // theorem covers them (Conservative Crust's).
   const bool several = theorem.algorithm->capabilities.multiple != algorithms::Support::no;
-  const std::vector<std::string> families = several ? std::vector<std::string>{"fourier", "multi", "nested", "rounded"}
-                                                    : std::vector<std::string>{"fourier", "rounded"};
+  std::vector<std::string> families{"fourier", "rounded"};
+  if (several) families.insert(families.begin() + 1, {"multi", "nested"});
+  if (theorem.covers_open_curves) families.push_back("open");
   if (!several && (options.curves == "multi" || options.curves == "nested"))
     throw std::invalid_argument(std::string(theorem.algorithm->name) + " reconstructs one curve: its theorem is not about " +
                                 options.curves + " curves");
-  if (options.curves == "multi" || options.curves == "nested" || std::ranges::find(families, options.curves) != families.end()) {
+  if (!theorem.covers_open_curves && options.curves == "open")
+    throw std::invalid_argument(std::string(theorem.algorithm->name) + "'s theorem is stated for closed curves only");
+  if (std::ranges::find(families, options.curves) != families.end()) {
     for (std::size_t i = 0; i < options.count; ++i) sources.push_back(generated(options.curves, i));
   } else if (options.curves == "mixed") {
     for (std::size_t i = 0; i < options.count; ++i)
@@ -172,7 +181,7 @@ std::vector<Suite_case> certification_cases(const Certify_options& options, cons
     const std::size_t step = std::max<std::size_t>(1, all.size() / std::max<std::size_t>(options.count, 1));
     for (std::size_t i = 0; i < all.size() && sources.size() < options.count; i += step) sources.push_back(all[i]);
   } else {
-    throw std::invalid_argument("--curves must be fourier, multi, nested, rounded, mixed, svg or glyphs, not '" +
+    throw std::invalid_argument("--curves must be fourier, multi, nested, rounded, open, mixed, svg or glyphs, not '" +
                                 options.curves + "'");
   }
   std::vector<Suite_case> cases;

@@ -12,10 +12,14 @@
 // input `fourier:seed=SEED*2^32+i,harmonics=1+i%8|epsilon=E`, of `multi` the input
 // `fourier:seed=SEED*2^32+3i,harmonics=1+i%8,components=2+i%2|epsilon=E`, of `nested`
 // `nested:seed=SEED*2^32+i,separation=0.1|...`, of `rounded`
-// `star:seed=SEED*2^32+i,angle=30+30(i%3),rounding=0.05|...`; `mixed` takes case i/4 of
-// the four in turn (i/2 of fourier and rounded for an algorithm that reconstructs one
-// curve, Connect2D, whose theorem is about one; multi and nested are refused for it). A rho theorem samples with `rho=R` (safe_rho_sampling), Connect2D's
-// with `epsilon=E|uniformity=1.609` (graded_epsilon_sampling).
+// `star:seed=SEED*2^32+i,angle=30+30(i%3),rounding=0.05|...`, of `open` (only for a
+// theorem that covers curves with ends: Conservative Crust's) the Fourier curve of i
+// opened by a gap of 0.1 or 0.5 (i%3 = 0, 1) or `spiral:seed=SEED*2^32+i` (i%3 = 2);
+// `mixed` takes case i/K of the K families the theorem is stated for in turn (fourier,
+// multi, nested, rounded, and open if it covers them; fourier and rounded for an
+// algorithm that reconstructs one curve, Connect2D, whose theorem is about one). A rho
+// theorem samples with `rho=R` (safe_rho_sampling), Connect2D's with
+// `epsilon=E|uniformity=1.609` (graded_epsilon_sampling).
 #pragma once
 
 #include <filesystem>
@@ -31,8 +35,8 @@ namespace curvebench::bench {
 
 struct Certify_options {
   // fourier (random smooth closed curves), multi (2 or 3 of them side by side), nested (one
-  // inside another), rounded (star polygons with every corner rounded), mixed (the four in
-  // turn), svg (the bundled drawings), glyphs
+  // inside another), rounded (star polygons with every corner rounded), open (curves with
+  // ends), mixed (those the theorem is stated for, in turn), svg (the bundled drawings), glyphs
   std::string curves = "fourier";
   std::size_t count = 100;
   certify::Measure measure = certify::Measure::epsilon;  // which theorem: on epsilon or on rho

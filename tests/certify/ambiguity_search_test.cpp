@@ -2,6 +2,7 @@
 
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -143,6 +144,26 @@ TEST(SearchAmbiguity, IsDeterministicForASeed) {
   EXPECT_EQ(a.best.log_knot_factors, b.best.log_knot_factors);
   EXPECT_EQ(a.measure.epsilon, b.measure.epsilon);
   EXPECT_EQ(a.start_results, b.start_results);
+}
+
+// The mirror search keeps S symmetric under R: x -> -x and C2 = R(C1): every point's
+// mirror image is in S, the second order is the first one mirrored, and the two curves,
+// each measured from scratch, have the same epsilon up to the lfs estimate's error, while
+// their polygons differ.
+TEST(SearchAmbiguity, MirrorSearchKeepsTheCaseSymmetric) {
+  const Ambiguity_search_options options{.count = 2, .seed = 3, .evaluations = 30, .mirror = true};
+  const Ambiguity_search_result found = search_ambiguity(options);
+  ASSERT_TRUE(found.measure.valid);
+  const Ambiguity_case& c = found.best;
+  const auto mirror_of = [&](std::size_t i) {
+    const Point image(-c.points[i].x(), c.points[i].y());
+    return static_cast<std::size_t>(std::ranges::find(c.points, image) - c.points.begin());
+  };
+  for (std::size_t k = 0; k < c.orders[0].size(); ++k) EXPECT_EQ(c.orders[1][k], mirror_of(c.orders[0][k])) << k;
+  EXPECT_NE(order_edges(c.orders[0]), order_edges(c.orders[1]));
+  EXPECT_NEAR(found.measure.epsilon[0], found.measure.epsilon[1], 2 * lfs_relative_error_bound * found.measure.epsilon[0]);
+  EXPECT_GE(c.points.size(), 6u);
+  EXPECT_LE(c.points.size(), 20u);
 }
 
 // Is `edges` one cycle through all n points?
