@@ -519,13 +519,16 @@ Ambiguity_search_result search_ambiguity(const Ambiguity_search_options& options
       const std::size_t n = options.points ? options.points : 6 + below(random, 11);
       std::tie(c, m) = make_start(random, n, options.search_density);
     }
+    std::tie(c, m) = climb(std::move(c), m, random, options.evaluations, options.search_density,
+                           options.minimum_separation, mirror);
     if (options.via_points) {
       add_via_points(c);
       if (options.mirror) symmetrize(c, mirror);
       m = measure(c, options.search_density, infinity, options.mirror);
+      std::tie(c, m) = climb(std::move(c), m, random, options.evaluations, options.search_density,
+                             options.minimum_separation, mirror);
+      result.evaluations += options.evaluations + 1;
     }
-    std::tie(c, m) = climb(std::move(c), m, random, options.evaluations, options.search_density,
-                           options.minimum_separation, mirror);
     const Ambiguity_measure final_measure = measure_ambiguity(c);  // at the default density
     result.start_results.push_back(final_measure.max_epsilon());
     result.evaluations += options.evaluations + 1;

@@ -26,7 +26,6 @@ void run(const Ambiguity_command_options& o) {
       {"evaluations", static_cast<double>(result.evaluations)},
       {"best_start", static_cast<double>(result.best_start)},
       {"mirror", o.search.mirror ? 1.0 : 0.0},
-      {"via_points", o.search.via_points ? 1.0 : 0.0},
       {"seconds", seconds}};
   const certify::Ambiguity_files files =
       certify::write_ambiguity_case(o.output, result.best, result.measure, o.search.seed, extra);
@@ -69,7 +68,8 @@ void add_ambiguity_command(CLI::App& app) {
   command->add_option("--seed", o->search.seed, "Seed of the search")->capture_default_str();
   command->add_option("--evaluations", o->search.evaluations, "Hill-climbing steps per start")->capture_default_str();
   command->add_flag("--via-points", o->search.via_points,
-                    "Let each curve pass through a free point (not a sample) between every two samples");
+                    "After the climb, let each curve pass through a free point (not a sample) between every two samples, "
+                    "and climb as long again");
   command->add_flag("--mirror", o->search.mirror,
                     "Search mirror-symmetric cases only (S = R(S), C2 = R(C1)), from where a random curve crosses its "
                     "mirror image; --points is then the exact size of S");

@@ -166,6 +166,20 @@ TEST(SearchAmbiguity, MirrorSearchKeepsTheCaseSymmetric) {
   EXPECT_LE(c.points.size(), 20u);
 }
 
+// Via points come as a second stage of the climb: both curves of the best case have one
+// via point between every two consecutive samples, mirror images of each other, and the
+// search is as deterministic as without them.
+TEST(SearchAmbiguity, ViaPointsFollowTheClimbAndKeepTheMirror) {
+  const Ambiguity_search_options options{.count = 2, .seed = 3, .evaluations = 20, .via_points = true, .mirror = true};
+  const Ambiguity_search_result found = search_ambiguity(options), again = search_ambiguity(options);
+  ASSERT_TRUE(found.measure.valid);
+  const Ambiguity_case& c = found.best;
+  for (int k = 0; k < 2; ++k) EXPECT_EQ(c.via[k].size(), c.points.size()) << k;
+  for (std::size_t e = 0; e < c.via[0].size(); ++e) EXPECT_EQ(c.via[1][e], Point(-c.via[0][e].x(), c.via[0][e].y())) << e;
+  EXPECT_EQ(found.start_results, again.start_results);
+  EXPECT_EQ(found.evaluations, 2 * (2 * options.evaluations + 2));
+}
+
 // Is `edges` one cycle through all n points?
 bool hamiltonian_cycle(const std::vector<geometry::Edge>& edges, std::size_t n) {
   if (edges.size() != n) return false;

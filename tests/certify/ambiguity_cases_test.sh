@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Re-measures every committed ambiguity case (docs/ambiguity/NAME/, written by `curvebench
+# ambiguity -o`) from its files alone: `curvebench measure` reads each curve back from its
+# SVG path and gives the recorded epsilon, the two ground truths through the same points
+# differ, and each is one closed cycle through every point.
+# Usage: ambiguity_cases_test.sh CURVEBENCH
+set -uo pipefail
+curvebench="$1"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+source "$root/tests/support/check.sh"
+
+cases=0
+for dir in "$root"/docs/ambiguity/*/; do
+  name="$(basename "$dir")"
+  cases=$((cases + 1))
+  for k in 1 2; do
+    recorded="$(/usr/bin/python3 -c 'import json, sys; print(repr(json.load(open(sys.argv[1]))["epsilon_" + sys.argv[2]]))' \
+      "$dir/summary.json" "$k")"
+    measured="$("$curvebench" measure --curve "svg:$dir/curve_$k.svg" -i "$dir/points.xy" -e "$dir/edges_$k.edges" --min-lfs 0 |
+      /usr/bin/python3 -c 'import json, sys; print(repr(json.load(sys.stdin)["epsilon"]))')"
+    check "$name: C$k measured epsilon $measured is the recorded $recorded" \
+      /usr/bin/python3 -c 'import sys; a, b = map(float, sys.argv[1:]); sys.exit(abs(a - b) > 1e-9 * b)' "$measured" "$recorded"
+  done
+  check "$name: both ground truths are one cycle through every point, and they differ" /usr/bin/python3 - "$dir" <<'PY'
+import sys
+from pathlib import Path
+d = Path(sys.argv[1])
+n = sum(1 for line in open(d / "points.xy") if line.strip() and not line.startswith("#"))
+def cycle(name):
+    edges = {tuple(sorted(map(int, l.split()[:2]))) for l in open(d / name) if l.strip() and not l.startswith("#")}
+    adjacent = {i: [] for i in range(n)}
+    for a, b in edges:
+        adjacent[a].append(b), adjacent[b].append(a)
+    if len(edges) != n or any(len(v) != 2 for v in adjacent.values()):
+        sys.exit(f"{name}: not 2-regular on {n} points")
+    seen, previous, at = {0}, None, 0
+    while True:  # walk the cycle from point 0
+        step = adjacent[at][0] if adjacent[at][0] != previous else adjacent[at][1]
+        if step == 0: break
+        seen.add(step); previous, at = at, step
+    if len(seen) != n: sys.exit(f"{name}: more than one cycle")
+    return edges
+sys.exit(cycle("edges_1.edges") == cycle("edges_2.edges"))
+PY
+done
+check "cases found" test "$cases" -ge 1
+finish
