@@ -27,10 +27,22 @@ std::vector<Point> points_at(const Curve& curve, const std::vector<std::vector<d
   return points;
 }
 
+std::vector<Sample_chain> chains_of(const Curve& curve, const std::vector<std::vector<double>>& parameters) {
+  std::vector<Sample_chain> chains;
+  for (std::size_t c = 0; c < curve.components.size(); ++c) chains.push_back({parameters[c].size(), curve.components[c].closed()});
+  return chains;
+}
+
 std::vector<Point> points_of(std::span<const Sharp_point> sharp_points) {
   std::vector<Point> points;
   for (const Sharp_point& sharp : sharp_points) points.push_back(sharp.point);
   return points;
+}
+
+// The medial axis of the dense sample at `parameters`.
+Medial_axis medial_axis_at(const Curve& curve, const std::vector<std::vector<double>>& parameters,
+                           std::span<const Sharp_point> sharp_points) {
+  return Medial_axis(points_at(curve, parameters), chains_of(curve, parameters), points_of(sharp_points));
 }
 
 // Cuts every chord of the dense sample that is long for the lfs estimate at its ends and
@@ -108,20 +120,20 @@ Local_feature_size::Local_feature_size(const Curve& curve, double density, doubl
         const std::vector<Point> initial = points_at(curve, parameters);
         const double diagonal = geometry::bounding_box_diagonal(initial);
 
-        Medial_axis axis(initial, points_of(sharp_points));
+        Medial_axis axis = medial_axis_at(curve, parameters, sharp_points);
         for (int round = 0; round < maximum_rounds; ++round) {
           bool changed = false;
           for (std::size_t c = 0; c < curve.components.size(); ++c)
             changed |= refine(curve.components[c], parameters[c], axis, density, resolution * diagonal);
           if (!changed) break;
-          axis = Medial_axis(points_at(curve, parameters), points_of(sharp_points));
+          axis = medial_axis_at(curve, parameters, sharp_points);
         }
         const std::vector<Curve_crossing> crossings = curve_crossings(curve, parameters);
         for (const Curve_crossing& crossing : crossings) {
           sharp_points.push_back({crossing.point, crossing.first});
           sharp_points.push_back({crossing.point, crossing.second});
         }
-        if (!crossings.empty()) axis = Medial_axis(points_at(curve, parameters), points_of(sharp_points));
+        if (!crossings.empty()) axis = medial_axis_at(curve, parameters, sharp_points);
         return Estimate{diagonal, std::move(parameters), std::move(sharp_points), std::move(axis)};
       }()) {}
 

@@ -1,8 +1,13 @@
 #include "geometry/lfs/medial_axis.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <utility>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 namespace curvebench::geometry {
 namespace {
@@ -17,21 +22,84 @@ std::optional<Point> circumcenter(const Point& a, const Point& b, const Point& c
   return Point(a.x() + (cy * b2 - by * c2) / denominator, a.y() + (bx * c2 - cx * b2) / denominator);
 }
 
-std::vector<Point> voronoi_vertices(std::span<const Point> sample, std::span<const Point> exact_points) {
-  // Duplicates merge silently, which is what a Voronoi diagram wants.
-  const CGAL::Delaunay_triangulation_2<Kernel> delaunay(sample.begin(), sample.end());
+// Points per chord length along a Voronoi edge between non-neighbours (the error of a
+// subdivided segment is about (step / 2)^2 / (2 lfs): 5e-4 of lfs at a gap's ends), and a
+// cap per edge.
+constexpr double edge_points_per_chord = 32;
+constexpr double max_edge_points = 512;
+
+using Delaunay = CGAL::Delaunay_triangulation_2<
+    Kernel, CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Kernel>>>;
+
+std::vector<Point> medial_points(std::span<const Point> sample, std::span<const Sample_chain> chains,
+                                 std::span<const Point> exact_points) {
+  // Each point's chain position, to tell neighbours along a component.
+  struct Position {
+    std::size_t chain, index;
+  };
+  std::vector<Position> position;
+  position.reserve(sample.size());
+  for (std::size_t c = 0; c < chains.size(); ++c)
+    for (std::size_t i = 0; i < chains[c].size; ++i) position.push_back({c, i});
+  if (position.size() != sample.size()) throw std::invalid_argument("medial axis: the chains do not add up to the sample");
+  const auto neighbours = [&](std::size_t a, std::size_t b) {
+    const Position p = position[a], q = position[b];
+    if (p.chain != q.chain) return false;
+    const std::size_t d = p.index > q.index ? p.index - q.index : q.index - p.index;
+    return d == 1 || (chains[p.chain].closed && d + 1 == chains[p.chain].size);
+  };
+
+  std::vector<std::pair<Point, std::size_t>> indexed;
+  indexed.reserve(sample.size());
+  for (std::size_t i = 0; i < sample.size(); ++i) indexed.emplace_back(sample[i], i);
+  // Duplicates merge silently (the first one's index stays), which is what a Voronoi
+  // diagram wants.
+  const Delaunay delaunay(indexed.begin(), indexed.end());
   std::vector<Point> points(exact_points.begin(), exact_points.end());
   points.reserve(points.size() + delaunay.number_of_faces());
   for (const auto face : delaunay.finite_face_handles())
     if (const auto center = circumcenter(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point()))
       points.push_back(*center);
+  if (delaunay.dimension() < 2) return points;
+  for (const auto& [face, i] : delaunay.finite_edges()) {
+    const auto a = face->vertex(Delaunay::cw(i)), b = face->vertex(Delaunay::ccw(i));
+    if (neighbours(a->info(), b->info())) continue;
+    const Point& p = a->point();
+    const Point& q = b->point();
+    const double chord = std::sqrt(CGAL::squared_distance(p, q)), step = chord / edge_points_per_chord;
+    // The Voronoi edge dual to pq: between its faces' circumcenters, or from the finite
+    // face's circumcenter away from that face for a hull edge (clipped a chord past pq).
+    const auto twin = face->neighbor(i);
+    const bool ray = delaunay.is_infinite(face) || delaunay.is_infinite(twin);
+    const auto finite = delaunay.is_infinite(face) ? twin : face;
+    const auto start = circumcenter(finite->vertex(0)->point(), finite->vertex(1)->point(), finite->vertex(2)->point());
+    if (!start || !(step > 0)) continue;
+    Point end;
+    if (ray) {
+      const Point& inner = finite->vertex(finite == face ? i : twin->index(face))->point();
+      const Point middle = CGAL::midpoint(p, q);
+      // The unit normal of pq on the side away from the finite face's third vertex.
+      const double sense = CGAL::orientation(p, q, inner) == CGAL::LEFT_TURN ? -1 : 1;
+      const Kernel::Vector_2 normal = Kernel::Vector_2(p.y() - q.y(), q.x() - p.x()) * (sense / chord);
+      end = *start + std::max(0.0, normal * (middle - *start) + chord) * normal;
+    } else {
+      const auto other = circumcenter(twin->vertex(0)->point(), twin->vertex(1)->point(), twin->vertex(2)->point());
+      if (!other) continue;
+      end = *other;
+    }
+    const double length = std::sqrt(CGAL::squared_distance(*start, end));
+    const auto pieces = static_cast<std::size_t>(std::min(std::ceil(length / step), double(max_edge_points)));
+    for (std::size_t k = 1; k < pieces; ++k) points.push_back(*start + (end - *start) * (double(k) / double(pieces)));
+    if (ray && pieces > 0) points.push_back(end);
+  }
   return points;
 }
 
 }  // namespace
 
-Medial_axis::Medial_axis(std::span<const Point> curve_sample, std::span<const Point> exact_points)
-    : Medial_axis(voronoi_vertices(curve_sample, exact_points)) {}
+Medial_axis::Medial_axis(std::span<const Point> curve_sample, std::span<const Sample_chain> chains,
+                         std::span<const Point> exact_points)
+    : Medial_axis(medial_points(curve_sample, chains, exact_points)) {}
 
 Medial_axis::Medial_axis(std::vector<Point> points) : points_(std::move(points)), index_(points_) {}
 

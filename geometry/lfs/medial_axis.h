@@ -4,11 +4,20 @@
 // Delaunay triangles. In the plane these converge to the medial axis, inner and outer
 // parts alike, as the sample gets denser (Amenta, Bern, Eppstein 1998); all are kept.
 //
+// Vertices alone miss a medial edge that runs far from any vertex: across the gap between
+// the two ends of an open curve the medial axis is the bisector of the two ends, a Voronoi
+// edge whose vertices can be far from the ends, or a ray to infinity (on a circle's arc all
+// circumcenters are the centre, and its ends' lfs, half the gap's chord, was measured as
+// the radius). So each Voronoi edge dual to a Delaunay edge pq between two samples that
+// are not neighbours along a component is kept as points |pq| / 32 apart (a hull edge's
+// ray up to |pq| past pq): about 5e-4 of lfs at a gap's ends.
+//
 // Points of the medial axis' closure that a sample can only approach (sharp corners,
 // crossings) are given exactly and added as they are. Local_feature_size builds the dense
 // sample; this class only turns a sample into medial points and answers distances.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -17,9 +26,17 @@
 
 namespace curvebench::geometry {
 
+// One component's run of the dense sample: its number of points, in order along it.
+struct Sample_chain {
+  std::size_t size = 0;
+  bool closed = false;
+};
+
 class Medial_axis {
  public:
-  Medial_axis(std::span<const Point> curve_sample, std::span<const Point> exact_points);
+  // `curve_sample` holds the chains one after another.
+  Medial_axis(std::span<const Point> curve_sample, std::span<const Sample_chain> chains,
+              std::span<const Point> exact_points);
 
   std::span<const Point> points() const { return points_; }
 

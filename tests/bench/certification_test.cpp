@@ -201,10 +201,11 @@ TEST(Certify, MixedFamiliesHoldForNnCrust) {
 // Conservative Crust's theorem covers open curves, so it has a family of curves with ends
 // (Fourier curves opened by a gap, spirals): each case's ground truth is a path, and the
 // sampler meets the hypothesis. The family finds what closed curves cannot: our reading
-// of the algorithm closes a narrow gap. A gap whose ends lie on a circle much larger than
-// the gap (here the curve's own) has a big empty circle through both ends, which is all
-// the rule asks of an edge, however dense the sampling. So every failure must be exactly
-// the ground truth plus the edge between the two ends, and spirals (no such circle) pass.
+// of the algorithm closes a gap in a convex stretch of the curve. The edge between its two
+// ends is on the convex hull, its dual Voronoi edge a ray, so arbitrarily large empty
+// circles pass through both ends, which is all the rule asks of an edge, however dense the
+// sampling. So every failure must be exactly the ground truth plus the edge between the
+// two ends, and spirals (ends inside the hull) pass.
 // A theorem on closed curves refuses the family.
 TEST(Certify, ConservativeCrustOnOpenCurvesFailsOnlyByClosingTheGap) {
   testing::TemporaryDirectory dir;

@@ -2,6 +2,7 @@
 
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -35,7 +36,8 @@ Curve circle_at(const Point& center, double r) {
 TEST(MedialAxis, OfARegularPolygonIsItsCenter) {
   std::vector<Point> polygon;
   for (int k = 0; k < 12; ++k) polygon.emplace_back(3 + std::cos(k * std::numbers::pi / 6), -1 + std::sin(k * std::numbers::pi / 6));
-  const Medial_axis axis(polygon, {});
+  const std::vector<Sample_chain> chain{{polygon.size(), true}};
+  const Medial_axis axis(polygon, chain, {});
   ASSERT_FALSE(axis.points().empty());
   for (const Point& p : axis.points()) EXPECT_LT(std::hypot(p.x() - 3, p.y() + 1), 1e-12);
   EXPECT_NEAR(axis.distance(Point(3, 1)), 2, 1e-12);
@@ -43,9 +45,10 @@ TEST(MedialAxis, OfARegularPolygonIsItsCenter) {
 
 TEST(MedialAxis, OfCollinearPointsIsEmptyUnlessGivenExactPoints) {
   const std::vector<Point> line{{0, 0}, {1, 1}, {2, 2}};
-  EXPECT_EQ(Medial_axis(line, {}).distance(Point(0, 0)), std::numeric_limits<double>::infinity());
+  const std::vector<Sample_chain> chain{{line.size(), false}};
+  EXPECT_EQ(Medial_axis(line, chain, {}).distance(Point(0, 0)), std::numeric_limits<double>::infinity());
   const std::vector<Point> exact{{5, 1}};
-  EXPECT_EQ(Medial_axis(line, exact).distance(Point(2, 1)), 3);
+  EXPECT_EQ(Medial_axis(line, chain, exact).distance(Point(2, 1)), 3);
 }
 
 TEST(LocalFeatureSize, OfACircleIsItsRadius) {
@@ -54,6 +57,29 @@ TEST(LocalFeatureSize, OfACircleIsItsRadius) {
   EXPECT_NEAR(lfs.at(Point(0.5, 0)), 0.5, 1e-9);  // off the curve: its distance to the medial axis
   EXPECT_TRUE(lfs.sharp_points().empty());
   for (const Point& p : lfs.medial_axis().points()) EXPECT_LT(std::hypot(p.x(), p.y()), 1e-9);
+}
+
+// An arc of the unit circle with a gap of half-angle g around the direction (1, 0): its
+// medial axis is the ray from the centre through the gap (a point on it has the two ends
+// as its nearest points), so at angle t from the gap's direction lfs = sin t for t <= 90
+// degrees, else 1 (the centre). At the ends it is half the gap's chord: no Voronoi vertex
+// of a dense sample is near there, as all are the centre.
+TEST(LocalFeatureSize, OfAnOpenArcIsItsDistanceToTheRayThroughTheGap) {
+  for (const double g : {0.1 * std::numbers::pi, 0.3 * std::numbers::pi}) {
+    const Curve arc{"arc", {Curve_component({std::make_shared<Circular_arc>(Point(0, 0), 1, g, 2 * std::numbers::pi - 2 * g)}, false)}};
+    const Local_feature_size lfs(arc);
+    const Curve_component& component = arc.components[0];
+    double worst = 0;
+    for (int i = 0; i <= 400; ++i) {
+      const double s = i / 400.0 * static_cast<double>(component.piece_count());
+      const Point p = component.point(s);
+      const double t = std::abs(std::atan2(p.y(), p.x()));
+      const double expected = t <= std::numbers::pi / 2 ? std::sin(t) : 1.0;
+      worst = std::max(worst, std::abs(lfs.at(0, s) - expected) / expected);
+    }
+    EXPECT_LT(worst, 1e-3) << "gap half-angle " << g;
+    EXPECT_GE(lfs.at(0, 0.0), std::sin(g) * (1 - 1e-9));  // from above: the estimate never undercuts
+  }
 }
 
 // The accuracy the header promises: relative error below 1e-3 at the default density,
