@@ -41,9 +41,10 @@ done
 [[ $jobs =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: --jobs takes a positive number" >&2; exit 2; }
 
 # ASan's default quarantine (256 MB of freed memory held back to catch use-after-free)
-# fragments its heap under reconstruction's many small exact-number allocations: the
-# process reached 1.2 GB resident after loading its corpus and crossed the 2 GB guard in
-# 19 minutes, while its live heap was 57 MB. 32 MB of quarantine starts at 0.26 GB and
+# inflated reconstruction's resident memory, with its many small exact-number allocations:
+# 1.2 GB after loading the corpus (0.85 GB with freed memory released to the OS each second,
+# 0.26 GB with a 16 MB quarantine), past the 2 GB guard in 19 minutes, while its live heap
+# was 57 MB. With 32 MB it started at 0.39 GB and peaked at 0.87 GB in 25 minutes; 32 MB
 # still spans far more than one input's lifetime, which is all a use-after-free here needs.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-quarantine_size_mb=32}
 
