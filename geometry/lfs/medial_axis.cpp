@@ -62,10 +62,11 @@ std::vector<Point> medial_points(std::span<const Point> sample, std::span<const 
       points.push_back(*center);
   if (delaunay.dimension() < 2) return points;
 
-  // The Voronoi edges dual to Delaunay edges between non-neighbours, where one of them
-  // runs nearer to a generator than every vertex does: only those can lower lfs much, and
-  // they are few (a gap between an open curve's ends; elsewhere vertices are dense along
-  // the medial axis), while subdividing every such edge made the estimate 2.4x slower.
+  // The Voronoi edges dual to Delaunay edges between non-neighbours that run nearer to
+  // both generators than every vertex does (its points are equidistant from the two):
+  // only those can lower lfs much, and they are few (a gap between an open curve's ends;
+  // elsewhere vertices are dense along the medial axis), while subdividing every such edge
+  // made the estimate 2.4x slower.
   const Nearest_point_index vertices(points);
   std::vector<Point> along;
   for (const auto& [face, i] : delaunay.finite_edges()) {

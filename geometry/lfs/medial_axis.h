@@ -9,7 +9,7 @@
 // edge whose vertices can be far from the ends, or a ray to infinity (on a circle's arc all
 // circumcenters are the centre, and its ends' lfs, half the gap's chord, was measured as
 // the radius). So a Voronoi edge dual to a Delaunay edge pq between two samples that are
-// not neighbours along a component, and that comes nearer to p or q than every vertex
+// not neighbours along a component, and that comes nearer to p and q than every vertex
 // does, is kept as points |pq| / 32 apart (a hull edge's ray up to |pq| past pq): about
 // 5e-4 of lfs at a gap's ends. Elsewhere vertices are dense along the medial axis.
 //
