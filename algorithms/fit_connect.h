@@ -12,9 +12,11 @@
 // a noise-free sampling nearly all points stay representatives, blended by at most the
 // fits' residuals; on their fish.txt (1000 points in a noisy band) 31 remain (theirs: 46).
 // Cost: a neighbourhood refits at every growth, so a noisy band whose neighbourhoods grow to
-// K points costs O(n K) fits of O(K); measured 0.7 s on fish.txt (theirs 3.4 s), 2.1 s on
-// 3000 lfs-noisy points (theirs 24.9 s), 43 s on 10^4 (theirs 809 s; K grows with the
-// density, so about n^2.6), 66 ms on 10^4 noise-free ones (theirs 4.9 s).
+// K points costs O(n K) fits of O(K); measured 0.26 s on fish.txt (theirs 3.4 s), 2.1 s on
+// 3000 lfs-noisy points (theirs 24.9 s), 22 s on 10^4 (theirs 809 s; K grows with the
+// density, so about n^2.6), 66 ms on 10^4 noise-free ones (theirs 4.9 s). Where the band
+// keeps its density as n grows (K fixed), n log n: 60 ms, 0.79 s and 10.5 s at 10^3, 10^4
+// and 10^5 points (noisy_reconstruction_benchmark, noisy_band).
 //
 // The state machine is the authors' (stefango74/fitconnect, Reconstruct2D.cpp,
 // reconstructNoisy with SHARPLEAF; StretchDenoise's repository has the same pass), read and

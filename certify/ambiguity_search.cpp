@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <tuple>
@@ -239,10 +240,11 @@ std::optional<std::pair<double, double>> crossing(const Point& a0, const Point& 
   return std::pair{t, u};
 }
 
-double perimeter_of_chain(std::span<const Point> closed) {
-  double total = 0;
-  for (std::size_t i = 0; i < closed.size(); ++i) total += length(closed[(i + 1) % closed.size()] - closed[i]);
-  return total;
+// The closed polygon through `points` in their order.
+double perimeter(std::span<const Point> points) {
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  return perimeter(points, order);
 }
 
 // Forces `c` onto the symmetric cases: each mirror pair to the mean of the one and the
@@ -331,7 +333,7 @@ Mirror_start make_mirror_start(Seeded_random& random, std::size_t points, double
     Mirror_start start;
     for (const auto& [position, x] : crossings) start.c.points.push_back(x);
     // Near the axis, rounding can give a crossing twice: keep the points apart.
-    if (!separated(start.c.points, 1e-2 * perimeter_of_chain(k) / static_cast<double>(n))) continue;
+    if (!separated(start.c.points, 1e-2 * perimeter(k) / static_cast<double>(n))) continue;
     for (const Point& p : start.c.points)
       start.mirror.push_back(static_cast<std::size_t>(std::ranges::find(start.c.points, mirrored(p)) - start.c.points.begin()));
     if (std::ranges::find(start.mirror, n) != start.mirror.end()) continue;  // exact by construction; never

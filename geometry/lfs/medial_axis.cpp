@@ -101,7 +101,7 @@ std::vector<Point> medial_points(std::span<const Point> sample, std::span<const 
     const double length = std::sqrt(edge.squared_length());
     const auto pieces = static_cast<std::size_t>(std::min(std::ceil(length / step), max_edge_points));
     for (std::size_t k = 1; k < pieces; ++k) along.push_back(*start + (end - *start) * (double(k) / double(pieces)));
-    along.push_back(end);
+    if (ray) along.push_back(end);  // a finite edge ends at a circumcenter, already a vertex
   }
   points.insert(points.end(), along.begin(), along.end());
   return points;
