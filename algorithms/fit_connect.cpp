@@ -94,6 +94,59 @@ Vector2<NT> radial(const Fit<NT>& fit, const Vector2<NT>& u) {
   return {fit.w * u.x - fit.cx, fit.w * u.y - fit.cy};
 }
 
+// ---- The hyper fit, a construction ------------------------------------------------------
+// The authors order each neighbourhood around Al-Sharadqah and Chernov's "hyper" circle fit
+// (an algebraic fit without essential bias; Electronic Journal of Statistics 3, 2009). Its
+// centre solves a quartic, so it is computed here in double, by Newton's method from 0 on
+// the quartic's smallest root as in that paper, and then taken as exact: every decision on
+// the neighbourhood is an exact sign with this centre as a given point, as CGAL's
+// Exact_predicates_inexact_constructions_kernel treats any construction. Kasa's fit, whose
+// centre is rational, serves where this one degenerates (nearly collinear members).
+// Returns the centre minus p, or nothing.
+std::optional<Vector2<double>> hyper_fit_centre(std::span<const Point> points, Index p, std::span<const Index> neighbors) {
+  double extent = 0;
+  for (const Index m : neighbors)
+    extent = std::max({extent, std::abs(points[m].x() - points[p].x()), std::abs(points[m].y() - points[p].y())});
+  if (!(extent > 0) || !std::isfinite(extent)) return std::nullopt;
+  int e = 0;  // members in units of 2^e about p, so that no moment overflows or underflows
+  std::frexp(extent, &e);
+  std::vector<Vector2<double>> u;
+  u.reserve(neighbors.size() + 1);
+  u.push_back({0, 0});
+  double mean_x = 0, mean_y = 0;
+  for (const Index m : neighbors) {
+    u.push_back({std::ldexp(points[m].x() - points[p].x(), -e), std::ldexp(points[m].y() - points[p].y(), -e)});
+    mean_x += u.back().x, mean_y += u.back().y;
+  }
+  const double count = static_cast<double>(u.size());
+  mean_x /= count, mean_y /= count;
+  double mxx = 0, myy = 0, mxy = 0, mxz = 0, myz = 0, mzz = 0;  // central moments, z = x^2 + y^2
+  for (const auto& [ux, uy] : u) {
+    const double x = ux - mean_x, y = uy - mean_y, z = x * x + y * y;
+    mxx += x * x, myy += y * y, mxy += x * y, mxz += x * z, myz += y * z, mzz += z * z;
+  }
+  mxx /= count, myy /= count, mxy /= count, mxz /= count, myz /= count, mzz /= count;
+  const double mz = mxx + myy, covariance = mxx * myy - mxy * mxy, z_variance = mzz - mz * mz;
+  // The characteristic polynomial 4 t^4 + a2 t^2 + a1 t + a0 of the constrained least squares.
+  const double a2 = 4 * covariance - 3 * mz * mz - mzz;
+  const double a1 = z_variance * mz + 4 * covariance * mz - mxz * mxz - myz * myz;
+  const double a0 = mxz * (mxz * myy - myz * mxy) + myz * (myz * mxx - mxz * mxy) - z_variance * covariance;
+  double t = 0, value = a0;
+  for (int iteration = 0; iteration < 99; ++iteration) {
+    const double next = t - value / (a1 + t * (2 * a2 + 16 * t * t));
+    if (next == t || !std::isfinite(next)) break;
+    const double next_value = a0 + next * (a1 + next * (a2 + 4 * next * next));
+    if (!(std::abs(next_value) < std::abs(value))) break;
+    t = next, value = next_value;
+  }
+  const double det = t * t - t * mz + covariance;
+  if (!(det > 1e-14 * mz * mz)) return std::nullopt;
+  const double cx = (mxz * (myy - t) - myz * mxy) / det / 2, cy = (myz * (mxx - t) - mxz * mxy) / det / 2;
+  const Vector2<double> centre{std::ldexp(cx + mean_x, e), std::ldexp(cy + mean_y, e)};
+  if (!std::isfinite(centre.x) || !std::isfinite(centre.y)) return std::nullopt;
+  return centre;
+}
+
 // The sign of Y sqrt(Q) - X sqrt(P) for P, Q > 0, from the signs of X and Y and, when
 // they agree, the sign of Y^2 Q - X^2 P.
 template <class Squared>
@@ -112,10 +165,13 @@ class Fitted_neighborhood {
   Fitted_neighborhood(std::span<const Point> points, Index p, std::span<const Index> neighbors,
                       const Kasa_sums<Error_bounded_double>* approximate_sums = nullptr)
       : points_(points), p_(p), neighbors_(neighbors), scale_(filter_exponent(points, p, neighbors)),
-        approx_(approximate_sums && scale_ == 0 ? approximate_sums->fit() : kasa_fit<Error_bounded_double>()) {
+        centre_(hyper_centre()),
+        approx_(centre_ ? fit<Error_bounded_double>()
+                        : approximate_sums && scale_ == 0 ? approximate_sums->fit() : kasa_fit<Error_bounded_double>()) {
     approx_radial_.reserve(neighbors.size() + 1);
     approx_radial_.push_back(radial(approx_, Vector2<Error_bounded_double>{0.0, 0.0}));
     for (const Index m : neighbors) approx_radial_.push_back(radial(approx_, local<Error_bounded_double>(points[m])));
+    if (centre_) return;
     const CGAL::Sign w = geometry::exact_sign(approx_.w, [&]<class NT>(std::type_identity<NT>) {
       return fitted<NT>().fit.w;
     });
@@ -195,6 +251,29 @@ class Fitted_neighborhood {
     return difference<NT>(x, points_[p_]);
   }
 
+  // The hyper fit's centre in the filters' frame (minus p, scaled by 2^-scale_), such that
+  // scaling it back is exact too; or nothing (Kasa's fit then).
+  std::optional<Vector2<double>> hyper_centre() const {
+    const auto centre = hyper_fit_centre(points_, p_, neighbors_);
+    if (!centre) return std::nullopt;
+    const Vector2<double> framed{std::ldexp(centre->x, -scale_), std::ldexp(centre->y, -scale_)};
+    if (std::ldexp(std::ldexp(framed.x, scale_), -scale_) != framed.x ||
+        std::ldexp(std::ldexp(framed.y, scale_), -scale_) != framed.y || !std::isfinite(std::ldexp(framed.x, scale_)) ||
+        !std::isfinite(std::ldexp(framed.y, scale_)))
+      return std::nullopt;
+    return framed;
+  }
+
+  // The fit as the polynomials radial() takes: the hyper fit's centre (w = 1), else Kasa's.
+  template <class NT>
+  Fit<NT> fit() const {
+    if (!centre_) return kasa_fit<NT>();
+    if constexpr (std::is_same_v<NT, geometry::Exact_number>)
+      return {NT(1), NT(std::ldexp(centre_->x, scale_)), NT(std::ldexp(centre_->y, scale_))};
+    else
+      return {NT(1), NT(centre_->x), NT(centre_->y)};
+  }
+
   template <class NT>
   Fit<NT> kasa_fit() const {
     Kasa_sums<NT> sums;
@@ -246,7 +325,7 @@ class Fitted_neighborhood {
   const Fitted<NT>& fitted() const {
     std::optional<Fitted<NT>>& cache = std::get<std::optional<Fitted<NT>>>(exact_caches_);
     if (!cache) {
-      cache.emplace(Fitted<NT>{kasa_fit<NT>(), {}});
+      cache.emplace(Fitted<NT>{fit<NT>(), {}});
       cache->radials.reserve(neighbors_.size() + 1);
       cache->radials.push_back(radial(cache->fit, Vector2<NT>{NT(0), NT(0)}));
       for (const Index m : neighbors_) cache->radials.push_back(radial(cache->fit, local<NT>(points_[m])));
@@ -320,6 +399,7 @@ class Fitted_neighborhood {
   Index p_;
   std::span<const Index> neighbors_;
   int scale_;
+  std::optional<Vector2<double>> centre_;  // the hyper fit's, in the filters' frame
   Fit<Error_bounded_double> approx_;
   std::vector<Vector2<Error_bounded_double>> approx_radial_;  // member j's, j = 0 is p
   mutable std::tuple<std::optional<Fitted<CGAL::Interval_nt_advanced>>, std::optional<Fitted<geometry::Exact_number>>>

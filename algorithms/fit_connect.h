@@ -10,28 +10,34 @@
 // to the mean of its projections onto the fits that hold it (the authors' blending), with
 // edges between them; every other input point is dropped, as in the authors' program. On
 // a noise-free sampling nearly all points stay representatives, blended by at most the
-// fits' residuals; on their fish.txt (1000 points in a noisy band) 31 remain (theirs: 46).
+// fits' residuals; on their fish.txt (1000 points in a noisy band) 48 remain (theirs: 46).
 // Cost: a neighbourhood refits at every growth, so a noisy band whose neighbourhoods grow to
-// K points costs O(n K) fits of O(K); measured 0.26 s on fish.txt (theirs 3.4 s), 2.1 s on
-// 3000 lfs-noisy points (theirs 24.9 s), 22 s on 10^4 (theirs 809 s; K grows with the
-// density, so about n^2.6), 66 ms on 10^4 noise-free ones (theirs 4.9 s). Where the band
-// keeps its density as n grows (K fixed), n log n: 60 ms, 0.79 s and 10.5 s at 10^3, 10^4
-// and 10^5 points (noisy_reconstruction_benchmark, noisy_band).
+// K points costs O(n K) fits of O(K); measured 97 ms on fish.txt (theirs 3.4 s), 4.6 s on
+// 10^4 lfs-noisy points at delta 0.1 (theirs 809 s; K grows with the density, so about
+// n^2), 446 s on 10^5, 29 ms on 10^4 noise-free ones (theirs 4.9 s). Where the band keeps
+// its density as n grows (K fixed), n log n: 33 ms, 0.37 s and 4.7 s at 10^3, 10^4 and 10^5
+// points (noisy_reconstruction_benchmark, noisy_band).
 //
 // The state machine is the authors' (stefango74/fitconnect, Reconstruct2D.cpp,
 // reconstructNoisy with SHARPLEAF; StretchDenoise's repository has the same pass), read and
 // re-expressed here; nothing is copied. Where ours differs, and why:
-//   - Fits. Theirs orders each neighbourhood around Chernov's hyper-accurate circle fit,
-//     in float. Ours uses the Kasa (algebraic least-squares) fit, whose centre is a
-//     rational function of the coordinates, so that the order along the fit and the
-//     conforming test are exact polynomial signs (geometry/exact_sign.h); exactly
-//     collinear neighbourhoods are ordered along their line. The two fits differ on small
-//     noisy neighbourhoods, so the state machine can take other turns than theirs there.
+//   - Fits. Both order each neighbourhood around Al-Sharadqah and Chernov's hyper circle
+//     fit. Its centre solves a quartic, so ours computes it in double (in units of a power
+//     of two about p, so that it commutes with scaling by powers of two) and then takes it
+//     as a given point: the order along the fit and the conforming test are exact signs of
+//     polynomials in the input coordinates and that centre (geometry/exact_sign.h), as
+//     CGAL's Exact_predicates_inexact_constructions_kernel treats a construction. Where the
+//     hyper fit degenerates (nearly collinear members) ours uses Kasa's fit, whose centre
+//     is rational, and orders exactly collinear members along their line; theirs, below an
+//     absolute threshold, takes an ad hoc centre off the first two members' chord. Ours
+//     before 2026-12-05 used Kasa's fit throughout: its shape differed from theirs on 4 of
+//     their 24 files and it cut the corners of their stairs; their program with Kasa's fit
+//     put in did the same. Now 23 of 24 shapes are theirs (family.p2d: exact ties on a grid).
 //   - Nearest neighbours come from exact distances with ties to the smaller index (theirs:
 //     ANN in double, ties in its tree order), and a neighbourhood stops growing at
 //     `max_neighbors` points (theirs at the whole point set). The bound keeps the run
 //     O(n K^2 log K) on adversarial input. On the authors' fish.txt neighbourhoods grow to
-//     874 points, and a bound of 128 leaves 10 pieces instead of one curve: hence 1024.
+//     874 points (with Kasa's fit), and a bound of 128 left 10 pieces instead of one curve: hence 1024.
 //   - Sharp corners. Theirs joins two curve ends at a non-conforming point when the ends'
 //     outward edges cross the neighbourhood's circle within 60 degrees of each other, as
 //     seen from the point (float constructions). Ours compares the angle at the point

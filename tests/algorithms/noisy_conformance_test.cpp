@@ -1,15 +1,13 @@
-// FitConnect and StretchDenoise against the authors' programs (stefango74/fitconnect and
-// stefango74/stretchdenoise, built unchanged but for a headless driver) on the authors' 24
-// point sets (data/stretchdenoise/, bundled). The authors' programs return a manifold on
-// every file; the table below is the shape of their output, read off it. Ours must give a
-// manifold of the same shape (components, closed ones, open ends) that covers the input.
-// Coverage is the share of input points within 5% of the output curve's bounding-box
-// diagonal of it. The issue asked for every point; that holds on 16 of 24 files
-// (FitConnect): stray points of the sensor scans lie up to 12.5% of the diagonal away,
-// and on fish.txt only 81% of the band is covered, the outline of 31 points cutting across
-// the fins (StretchDenoise: 74%). The test holds a floor of 70% and prints the shares. Where
-// ours differs, the file is listed with the reason, and a listed file that comes to match
-// fails, so the list cannot go stale.
+// FitConnect and StretchDenoise against the authors' program (stefango74/fitconnect, built
+// unchanged but for a headless driver: their invertY, MODE_BLEND) on the authors' 24 point
+// sets (data/stretchdenoise/, bundled). Their program returns a manifold on every file; the
+// table below is the shape of its output (components, closed ones, open ends) and its
+// coverage, read off that output: the share of input points within 5% of the output's
+// bounding-box diagonal of the output curve. Ours must give a manifold of the same shape
+// whose coverage is at most 0.08 below theirs. The issue asked for every point within 5%;
+// the authors' own program misses that on 6 files (fish.txt 0.790), so their coverage is
+// the reference. Where ours differs in shape, the file is listed with the reason, and a
+// listed file that comes to match fails, so the list cannot go stale.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,28 +34,44 @@ namespace fs = std::filesystem;
 struct Authors_shape {
   std::string file;
   std::size_t closed, open;  // components of the authors' output
+  double coverage;           // of the input by the authors' output (unblended positions)
 };
 
 // One closed curve on 17 files; the vases and the drill case are several closed curves;
 // the stairs one open chain.
 const std::vector<Authors_shape> kAuthors{
-    {"Circle0.txt", 1, 0}, {"Cup0.txt", 1, 0}, {"Keyboard0.txt", 1, 0}, {"Monitor0.txt", 1, 0},
-    {"Mouse0.txt", 1, 0}, {"apple_2percent_noise.txt", 1, 0}, {"bot.txt", 1, 0},
-    {"butterfly_2percent_noise.txt", 1, 0}, {"crab_2percent_noise.txt", 1, 0},
-    {"dolphin_2percent_noise.txt", 1, 0}, {"drill.txt", 1, 0}, {"drill2_xyz.txt", 1, 0}, {"drill_xyz.txt", 1, 0},
-    {"drillcase_xyz.txt", 6, 0}, {"family.p2d", 1, 0}, {"fish.txt", 1, 0}, {"stair-noise00.xy", 0, 1},
-    {"stair.xy", 0, 1}, {"stair.xym", 0, 1}, {"thing.txt", 1, 0}, {"vase.txt", 2, 0}, {"vase2_xyz.txt", 2, 0},
-    {"vase_xyz.txt", 3, 0}, {"what_xyz.txt", 1, 0},
+    {"Circle0.txt", 1, 0, 1.000},
+    {"Cup0.txt", 1, 0, 0.943},
+    {"Keyboard0.txt", 1, 0, 1.000},
+    {"Monitor0.txt", 1, 0, 0.960},
+    {"Mouse0.txt", 1, 0, 1.000},
+    {"apple_2percent_noise.txt", 1, 0, 1.000},
+    {"bot.txt", 1, 0, 0.958},
+    {"butterfly_2percent_noise.txt", 1, 0, 1.000},
+    {"crab_2percent_noise.txt", 1, 0, 0.996},
+    {"dolphin_2percent_noise.txt", 1, 0, 1.000},
+    {"drill.txt", 1, 0, 1.000},
+    {"drill2_xyz.txt", 1, 0, 1.000},
+    {"drill_xyz.txt", 1, 0, 0.919},
+    {"drillcase_xyz.txt", 6, 0, 1.000},
+    {"family.p2d", 1, 0, 1.000},
+    {"fish.txt", 1, 0, 0.790},
+    {"stair-noise00.xy", 0, 1, 1.000},
+    {"stair.xy", 0, 1, 1.000},
+    {"stair.xym", 0, 1, 1.000},
+    {"thing.txt", 1, 0, 1.000},
+    {"vase.txt", 2, 0, 1.000},
+    {"vase2_xyz.txt", 2, 0, 1.000},
+    {"vase_xyz.txt", 3, 0, 1.000},
+    {"what_xyz.txt", 1, 0, 1.000},
 };
 
 // Files where ours has another shape than theirs, with the reason.
 const std::map<std::string, std::string> kDiffering{
-    {"Cup0.txt",
-     "a 4-point open chain (ends: input points 67 and 75) beside the closed outline: both ends "
-     "conform with one link, grow through the whole set and become leaves; the authors' program drops them"},
-    {"drill_xyz.txt", "2 closed curves"},
-    {"drillcase_xyz.txt", "7 closed curves"},
-    {"family.p2d", "3 closed curves"},
+    {"family.p2d",
+     "3 closed curves: two 4-point loops (input points 412, 413, 416, 417 and 2890, 2891, 2905, 2906), each a "
+     "square of the file's grid, whose four points are exactly cocircular; the exact ties go otherwise than "
+     "the authors' float comparisons, which leave these points out"},
 };
 
 struct Shape {
@@ -128,7 +142,8 @@ void expect_authors_shapes(const std::string& algorithm) {
     const double covered = coverage(0.05, input, output);
     std::cout << algorithm << " " << authors.file << ": " << output.points.size() << " points, coverage "
               << covered << '\n';
-    EXPECT_GE(covered, 0.7) << "input points far from the output curve";
+    EXPECT_GE(covered, authors.coverage - 0.08) << "input points far from the output curve (the authors' "
+                                                   << "program covers " << authors.coverage << ")";
     const bool same = ours.closed == authors.closed && ours.open == authors.open;
     matching += same;
     if (const auto listed = kDiffering.find(authors.file); listed != kDiffering.end())
