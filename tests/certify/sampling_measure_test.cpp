@@ -186,10 +186,10 @@ RC_GTEST_PROP(SafeRhoSampling, MeasuresAtMostItsTarget, ()) {
   RC_TAG(family);
   const double measured = measure_rho(lfs, sample, sample.minimum_lfs).rho;
   RC_ASSERT(measured <= rho);
-  // Near it: at rho near 1 a component gets a handful of samples, and the walk's last
-  // steps can leave the largest interval at 0.797 of the target (family 0, curve 3, rho
-  // 0.918, with the lfs that keeps gap edges of the Voronoi diagram), so 0.75 here.
-  RC_ASSERT(measured > 0.75 * rho);
+  // Near it: every interval the walk leaves above the target is covered greedily, each
+  // part but the last at the target (at least 0.97 of it in 13,000 cases; halving them had
+  // left 0.62 of rho 0.945 on family 0, curve 2).
+  RC_ASSERT(measured > 0.95 * rho);
 }
 
 // Connect2D's two hypotheses at once: epsilon at most the target, and near it, and every
