@@ -4,7 +4,7 @@
 // the authors' 1000-point fish (data/stretchdenoise/fish.txt). Two noise scalings:
 //   noisy_fourier   delta = 0.1 at every n: the band keeps its width while n grows, so it
 //                   holds ever more points across, and FitConnect's neighbourhoods (which
-//                   grow until they span the band) grow with n: about n^2.6 here.
+//                   grow until they span the band) grow with n: about n^2 here.
 //   noisy_band      delta = 0.1 * 1000 / n: the band narrows with the sample spacing, so
 //                   every n has the 10^3 sample's points across the band, and this row
 //                   measures the cost per point of a band of fixed density.
