@@ -32,7 +32,8 @@
 //     absolute threshold, takes an ad hoc centre off the first two members' chord. Ours
 //     before 2026-12-05 used Kasa's fit throughout: its shape differed from theirs on 4 of
 //     their 24 files and it cut the corners of their stairs; their program with Kasa's fit
-//     put in did the same. Now 23 of 24 shapes are theirs (family.p2d: exact ties on a grid).
+//     put in did the same. Now 23 of 24 shapes are theirs (family.p2d: cocircular grid
+//     squares, whose order along a fit hangs on how its centre is rounded).
 //   - Nearest neighbours come from exact distances with ties to the smaller index (theirs:
 //     ANN in double, ties in its tree order), and a neighbourhood stops growing at
 //     `max_neighbors` points (theirs at the whole point set). The bound keeps the run

@@ -70,8 +70,9 @@ const std::vector<Authors_shape> kAuthors{
 const std::map<std::string, std::string> kDiffering{
     {"family.p2d",
      "3 closed curves: two 4-point loops (input points 412, 413, 416, 417 and 2890, 2891, 2905, 2906), each a "
-     "square of the file's grid, whose four points are exactly cocircular; the exact ties go otherwise than "
-     "the authors' float comparisons, which leave these points out"},
+     "square of the file's grid, whose four points are cocircular, so that their order along a fit hangs on "
+     "the last bits of its centre, which ours and the authors' program round differently; theirs leaves these "
+     "points out"},
 };
 
 struct Shape {
