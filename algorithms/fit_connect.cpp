@@ -669,7 +669,7 @@ class Fit_connect {
     };
     // How far a blending window may widen, from the input's noise level (fit_connect.h).
     const double noise = noise_level(representatives);
-    const int widest = std::min(options_.smoothing, noise > 0.03 ? 2 : noise > 0.005 ? 1 : 0);
+    const int widest = noise > 0.03 ? options_.smoothing : noise > 0.005 ? std::min(options_.smoothing, 1) : 0;
     for (const Index p : representatives) {
       if (state_[p] != State::manifold) continue;
       std::vector<Index> members;
@@ -688,14 +688,6 @@ class Fit_connect {
     return result;
   }
 
-  // The fit p's blending projects onto, and its members. On a sparse sampling a
-  // neighbourhood holds a few points, too few to average noise out, so the window may take
-  // in the neighbourhoods of up to `smoothing` representatives on each side along the
-  // curve. It widens while its residual stays that of noise: widening multiplies the
-  // residual of noise by about 1 but that of a fit the curve bends away from by more,
-  // as its deviation grows with the window's length cubed. Ratio 2 was chosen on the
-  // `lfsnoise-full` and `noisy-full` suites (the trade-off is in README: heavier noise
-  // favours wider windows, a noise-free sampling none).
   // The input's noise level: the median over manifold representatives p of the residual
   // of the fit to p, its curve neighbours and their neighbourhoods, against the mean
   // squared length of p's two edges. Scale-free; on the suites' samplings at epsilon 0.3 it
@@ -719,6 +711,14 @@ class Fit_connect {
     return levels[levels.size() / 2];
   }
 
+  // The fit p's blending projects onto, and its members. On a sparse sampling a
+  // neighbourhood holds a few points, too few to average noise out, so the window may take
+  // in the neighbourhoods of up to `widest` representatives on each side along the
+  // curve. It widens while its residual stays that of noise: widening multiplies the
+  // residual of noise by about 1 but that of a fit the curve bends away from by more,
+  // as its deviation grows with the window's length cubed. Ratio 2 was chosen on the
+  // `lfsnoise-full` and `noisy-full` suites (the trade-off is in README: heavier noise
+  // favours wider windows, a noise-free sampling none).
   std::optional<Arc_projection> smoothing_fit(Index p, std::vector<Index>& members, int widest) const {
     constexpr double noise_ratio = 2;
     std::optional<Arc_projection> chosen;
@@ -1274,7 +1274,8 @@ Algorithm fit_connect_algorithm() {
                                    .minimum = 0,
                                    .maximum = 64,
                                    .meaning = "representatives on each side whose neighbourhoods a blending fit may take "
-                                              "in; 0: the point's own (the authors')"};
+                                              "in under heavy noise (1 under light noise, none without); 0: the point's "
+                                              "own (the authors')"};
   static const Parameter blend{.name = "blend",
                                .type = Parameter_type::integer,
                                .default_value = 1,

@@ -54,10 +54,10 @@
 //     projections inside the fitted arc, and sharp points and their neighbours unmoved.
 //     Theirs fits each manifold point's own neighbourhood; on a sparse noisy sampling that
 //     is 3 to 5 points, which barely smooth. Ours widens the window by the neighbourhoods of
-//     up to 2 representatives on each side (at most `smoothing`), while the fit's residual
-//     stays that of noise (it at most doubles per step), and only as far as the input's
-//     noise level asks: the median, over the representatives, of a one-hop window's fit
-//     residual against the squared edge length; above 0.005 one hop, above 0.03 two (chosen
+//     up to `smoothing` (2) representatives on each side, while the fit's residual stays
+//     that of noise (it at most doubles per step), and only as far as the input's noise
+//     level asks: the median, over the representatives, of a one-hop window's fit residual
+//     against the squared edge length; above 0.005 one hop, above 0.03 `smoothing` (chosen
 //     on the noisy-full and lfsnoise-full suites, 200 curves per level, so not validated on
 //     other curves). There, against their window (`smoothing` = 0): RMS distance 0.0277
 //     instead of 0.0354 of the diagonal at lfs noise 0.5 and 0.0081 instead of 0.0100 at
@@ -77,7 +77,8 @@ namespace curvebench::algorithms {
 struct Fit_connect_options {
   int max_neighbors = 1024;  // the largest neighbourhood a point grows to (2 to 65536)
   double sharp_angle = 60;   // degrees: curve ends meeting within it form a sharp corner
-  int smoothing = 2;         // representatives on each side a blending fit may take in (0 to 64)
+  int smoothing = 2;         // representatives on each side a blending fit may take in under heavy
+                             // noise (0 to 64); under light noise at most 1, without noise none
   bool blend = true;         // output points blended onto the fits (else input positions)
 };
 
