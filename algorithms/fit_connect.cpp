@@ -655,6 +655,20 @@ class Fit_connect {
     return result;
   }
 
+  // A window of smoothing_window(p, hops) and its fit, if it has the 5 points a circle's
+  // residual needs and the fit is usable.
+  struct Window_fit {
+    std::vector<Index> members;
+    std::optional<Arc_projection> fit;
+  };
+
+  Window_fit window_fit(Index p, int hops) const {
+    Window_fit window{smoothing_window(p, hops), std::nullopt};
+    if (window.members.size() >= 5)
+      if (Arc_projection fit(points_, p, window.members); fit.usable()) window.fit.emplace(std::move(fit));
+    return window;
+  }
+
   // The authors' blending (projectPoints): each representative moves to the mean of its
   // projections onto its own fit and onto the fits of the manifold points whose
   // neighbourhoods hold it; sharp points and their curve neighbours keep their position.
@@ -667,13 +681,19 @@ class Fit_connect {
         if (q != none && state_[q] == State::sharp) return true;
       return false;
     };
+    // Each manifold representative's one-hop window and its fit: the noise level needs them
+    // all, and the blending again wherever it widens.
+    std::vector<Window_fit> one_hop(representatives.size());
+    for (std::size_t i = 0; i < representatives.size(); ++i)
+      if (state_[representatives[i]] == State::manifold) one_hop[i] = window_fit(representatives[i], 1);
     // How far a blending window may widen, from the input's noise level (fit_connect.h).
-    const double noise = noise_level(representatives);
+    const double noise = noise_level(representatives, one_hop);
     const int widest = noise > 0.03 ? options_.smoothing : noise > 0.005 ? std::min(options_.smoothing, 1) : 0;
-    for (const Index p : representatives) {
+    for (std::size_t i = 0; i < representatives.size(); ++i) {
+      const Index p = representatives[i];
       if (state_[p] != State::manifold) continue;
       std::vector<Index> members;
-      const std::optional<Arc_projection> arc = smoothing_fit(p, members, widest);
+      const std::optional<Arc_projection> arc = smoothing_fit(p, members, widest, one_hop[i]);
       if (!arc) continue;
       for (const Index k : members) {
         if (fixed(k)) continue;
@@ -693,17 +713,14 @@ class Fit_connect {
   // squared length of p's two edges. Scale-free; on the suites' samplings at epsilon 0.3 it
   // is 0.003-0.004 without noise (the fit's model error), 0.004-0.008 at uniform noise 0.01,
   // 0.01-0.016 at 0.03, 0.006-0.015 at lfs noise 0.1 and 0.04-0.1 at 0.33 to 0.5.
-  double noise_level(std::span<const Index> representatives) const {
+  double noise_level(std::span<const Index> representatives, std::span<const Window_fit> one_hop) const {
     std::vector<double> levels;
-    for (const Index p : representatives) {
-      if (state_[p] != State::manifold || links_[p][0] == none || links_[p][1] == none) continue;
-      const std::vector<Index> window = smoothing_window(p, 1);
-      if (window.size() < 5) continue;
-      const Arc_projection fit(points_, p, window);
-      if (!fit.usable()) continue;
+    for (std::size_t i = 0; i < representatives.size(); ++i) {
+      const Index p = representatives[i];
+      if (!one_hop[i].fit || links_[p][0] == none || links_[p][1] == none) continue;
       double spacing = 0;
       for (const Index q : links_[p]) spacing += CGAL::squared_distance(points_[p], points_[q]) / 2;
-      const double level = fit.residual() / spacing;
+      const double level = one_hop[i].fit->residual() / spacing;
       if (spacing > 0 && std::isfinite(level)) levels.push_back(level);  // not at the ends of double
     }
     if (levels.empty()) return 0;
@@ -719,17 +736,17 @@ class Fit_connect {
   // as its deviation grows with the window's length cubed. Ratio 2 was chosen on the
   // `lfsnoise-full` and `noisy-full` suites (the trade-off is in README: heavier noise
   // favours wider windows, a noise-free sampling none).
-  std::optional<Arc_projection> smoothing_fit(Index p, std::vector<Index>& members, int widest) const {
+  // `one_hop` is window_fit(p, 1), computed once by the caller.
+  std::optional<Arc_projection> smoothing_fit(Index p, std::vector<Index>& members, int widest,
+                                              const Window_fit& one_hop) const {
     constexpr double noise_ratio = 2;
     std::optional<Arc_projection> chosen;
     for (int hops = 0; hops <= widest; ++hops) {
-      std::vector<Index> window = smoothing_window(p, hops);
-      if (window.size() < 5) continue;  // a circle's residual needs 5 points
-      Arc_projection fit(points_, p, window);
-      if (!fit.usable()) continue;
-      if (chosen && !(fit.residual() <= noise_ratio * chosen->residual())) break;
-      chosen.emplace(std::move(fit));
-      members = std::move(window);
+      Window_fit window = hops == 1 ? one_hop : window_fit(p, hops);
+      if (!window.fit) continue;
+      if (chosen && !(window.fit->residual() <= noise_ratio * chosen->residual())) break;
+      chosen = std::move(window.fit);
+      members = std::move(window.members);
     }
     return chosen;
   }

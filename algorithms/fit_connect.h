@@ -12,10 +12,10 @@
 // a noise-free sampling nearly all points stay representatives, blended by at most the
 // fits' residuals; on their fish.txt (1000 points in a noisy band) 48 remain (theirs: 46).
 // Cost: a neighbourhood refits at every growth, so a noisy band whose neighbourhoods grow to
-// K points costs O(n K) fits of O(K); measured 106 ms on fish.txt (theirs 3.4 s), 4.6 s on
+// K points costs O(n K) fits of O(K); measured 96 ms on fish.txt (theirs 3.4 s), 4.6 s on
 // 10^4 lfs-noisy points at delta 0.1 (theirs 809 s; K grows with the density, so about
 // n^2), 446 s on 10^5, 29 ms on 10^4 noise-free ones (theirs 4.9 s). Where the band keeps
-// its density as n grows (K fixed), n log n: 37 ms, 0.41 s and 5.5 s at 10^3, 10^4 and 10^5
+// its density as n grows (K fixed), n log n: 35 ms, 0.41 s and 5.1 s at 10^3, 10^4 and 10^5
 // points (noisy_reconstruction_benchmark, noisy_band).
 //
 // The state machine is the authors' (stefango74/fitconnect, Reconstruct2D.cpp,
