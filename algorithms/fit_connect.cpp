@@ -63,14 +63,11 @@ struct Fit {
   NT w, cx, cy;
 };
 
-// The sums of the normal equations, relative to p: a neighbourhood that grows by a point
-// adds its terms, in the same order as a sum from scratch would, so the result is the same.
+// The sums of the normal equations, relative to p.
 template <class NT>
 struct Kasa_sums {
   NT sxx{0}, sxy{0}, syy{0}, sx{0}, sy{0}, sxz{0}, syz{0}, sz{0};
   std::size_t count = 1;  // p itself, at the origin
-
-  void add(const Point& x, const Point& p) { add(difference<NT>(x, p)); }
 
   void add(const Vector2<NT>& u) {
     const NT z = u.x * u.x + u.y * u.y;
@@ -160,14 +157,9 @@ CGAL::Sign root_difference_sign(CGAL::Sign y, CGAL::Sign x, const Squared& squar
 // One point's neighbourhood (p and its k nearest) ordered along its fit. Member 0 is p.
 class Fitted_neighborhood {
  public:
-  // `approximate_sums`: the neighbourhood's sums in Error_bounded_double, if the caller
-  // keeps them (a growing neighbourhood), else they are summed here.
-  Fitted_neighborhood(std::span<const Point> points, Index p, std::span<const Index> neighbors,
-                      const Kasa_sums<Error_bounded_double>* approximate_sums = nullptr)
+  Fitted_neighborhood(std::span<const Point> points, Index p, std::span<const Index> neighbors)
       : points_(points), p_(p), neighbors_(neighbors), scale_(filter_exponent(points, p, neighbors)),
-        centre_(hyper_centre()),
-        approx_(centre_ ? fit<Error_bounded_double>()
-                        : approximate_sums && scale_ == 0 ? approximate_sums->fit() : kasa_fit<Error_bounded_double>()) {
+        centre_(hyper_centre()), approx_(fit<Error_bounded_double>()) {
     approx_radial_.reserve(neighbors.size() + 1);
     approx_radial_.push_back(radial(approx_, Vector2<Error_bounded_double>{0.0, 0.0}));
     for (const Index m : neighbors) approx_radial_.push_back(radial(approx_, local<Error_bounded_double>(points[m])));
@@ -624,7 +616,7 @@ class Fit_connect {
  public:
   Fit_connect(std::span<const Point> points, const Fit_connect_options& options)
       : points_(points), options_(options), n_(points.size()), dt_(points), state_(n_, State::initial),
-        nearest_(n_), sides_(n_), fit_order_(n_), sums_(n_), links_(n_, {none, none}), referrers_(n_), mark_(n_, 0) {
+        nearest_(n_), sides_(n_), fit_order_(n_), links_(n_, {none, none}), referrers_(n_), mark_(n_, 0) {
     streams_.reserve(n_);
     for (Index p = 0; p < n_; ++p) streams_.emplace_back(dt_, p);
   }
@@ -812,10 +804,9 @@ class Fit_connect {
       if (q == none) return false;
       nearest_[p].push_back(q);
       referrers_[q].push_back(p);
-      sums_[p].add(points_[q], points_[p]);
     }
     bool conforming = false;
-    Fitted_neighborhood(points_, p, nearest_[p], &sums_[p]).order(fit_order_[p], sides_[p], conforming);
+    Fitted_neighborhood(points_, p, nearest_[p]).order(fit_order_[p], sides_[p], conforming);
     state_[p] = conforming ? State::conform : State::nonconform;  // both unhandled: no set change
     return true;
   }
@@ -1231,7 +1222,6 @@ class Fit_connect {
   std::vector<std::vector<Index>> nearest_;  // the neighbourhood, nearest first
   std::vector<Sides> sides_;                 // ... ordered along its fit, nearest first
   std::vector<std::vector<std::uint32_t>> fit_order_;  // ... all along the fit (member numbers)
-  std::vector<Kasa_sums<Error_bounded_double>> sums_;  // ... its fit's sums
   std::vector<std::array<Index, 2>> links_;  // curve neighbours, slot s on side s
   std::vector<std::vector<Index>> referrers_;  // the points whose neighbourhood holds this one
   std::set<Index> unhandled_;
