@@ -206,6 +206,7 @@ class MirrorCase:
                 via.append(q)
         self.layout = layout
         self.via_count = len(via)
+        self.counts = None  # (per, dense samples per knot interval), set by grid()
         reps = self.samples[self.representatives].copy()
         reps[self.on_axis, 0] = 0.0
         self.x0 = np.concatenate([reps.ravel(), np.array(via).ravel(), np.log(intervals)])
@@ -222,29 +223,25 @@ class MirrorCase:
         knots = np.array([samples[i] if kind == "sample" else via[i] for kind, i in self.layout])
         return samples, knots, np.exp(x[2 * nr + 2 * nv:])
 
-    def grid(self, x, per):
+    def grid(self, spline, t, samples, per):
         """Curve parameters of the dense samples. Their spacing must stay well below lfs, or the medial
         balls between two strands that nearly touch come out too large; so the count of each knot
-        interval is its length in units of lfs (PER per unit, at least 4), taken at the start of a
-        descent and then fixed, so that the surrogate stays smooth in x."""
-        if getattr(self, "_counts", (None,))[0] != per:
-            samples, knots, intervals = self.unpack(x)
-            spline, t = closed_spline(knots, intervals)
+        interval is its length in units of lfs (PER per unit, at least 4), taken at the first call
+        and then fixed, so that the surrogate stays smooth in x."""
+        if self.counts is None or self.counts[0] != per:
             fine = 48
-            u = (t[:-1, None] + np.outer(intervals, np.arange(fine) / fine)).ravel()
+            u = (t[:-1, None] + np.outer(np.diff(t), np.arange(fine) / fine)).ravel()
             points = np.ascontiguousarray(spline(u))
             lfs = _ratios(points, np.ascontiguousarray(spline(u, 1)), points, samples, medial_tips(spline, t))[1]
             step = np.linalg.norm(np.roll(points, -1, axis=0) - points, axis=1)
-            units = (step / lfs).reshape(len(intervals), fine).sum(1)
-            self._counts = (per, np.clip(np.ceil(per * units), 4, 400).astype(int))
-        counts = self._counts[1]
-        t = np.concatenate([[0.0], np.cumsum(self.unpack(x)[2])])
-        return np.concatenate([t[k] + (t[k + 1] - t[k]) * np.arange(c) / c for k, c in enumerate(counts)])
+            units = (step / lfs).reshape(len(t) - 1, fine).sum(1)
+            self.counts = (per, np.clip(np.ceil(per * units), 4, 400).astype(int))
+        return np.concatenate([t[k] + (t[k + 1] - t[k]) * np.arange(c) / c for k, c in enumerate(self.counts[1])])
 
     def ratios(self, x, per):
         samples, knots, intervals = self.unpack(x)
         spline, t = closed_spline(knots, intervals)
-        u = self.grid(x, per)
+        u = self.grid(spline, t, samples, per)
         points = np.ascontiguousarray(spline(u))
         query = np.ascontiguousarray(np.vstack([points, voronoi_crossings(spline, u, samples)]))
         return _ratios(points, np.ascontiguousarray(spline(u, 1)), query, samples, medial_tips(spline, t))[0]

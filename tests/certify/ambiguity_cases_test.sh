@@ -3,14 +3,14 @@
 # ambiguity -o`) from its files alone: `curvebench measure` reads each curve back from its
 # SVG path and gives the recorded epsilon, the two ground truths through the same points
 # differ, and each is one closed cycle through every point.
-# Usage: ambiguity_cases_test.sh CURVEBENCH
+# Usage: ambiguity_cases_test.sh CURVEBENCH [CASES_DIR]   (default: docs/ambiguity)
 set -uo pipefail
 curvebench="$1"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 source "$root/tests/support/check.sh"
 
 cases=0
-for dir in "$root"/docs/ambiguity/*/; do
+for dir in "${2:-$root/docs/ambiguity}"/*/; do
   name="$(basename "$dir")"
   cases=$((cases + 1))
   for k in 1 2; do
