@@ -36,11 +36,9 @@ Needs python3-numpy and python3-scipy (scripts/setup.sh installs them); python3-
 compiles the ratio kernel, which is then several times faster.
 """
 import argparse
-import json
 import math
 import os
 import re
-import subprocess
 import sys
 import time
 
@@ -48,6 +46,8 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 import numpy as np
 from scipy.interpolate import CubicSpline
 from scipy.optimize import minimize
+
+import ambiguity_case_files as case_files
 
 MIRROR = np.array([-1.0, 1.0])
 
@@ -364,57 +364,11 @@ def bezier_path(knots, intervals, transform):
     return d + " Z"
 
 
-def measure(curvebench, directory):
-    epsilons = []
-    for k in (1, 2):
-        out = subprocess.run([curvebench, "measure", "--curve", f"svg:{directory}/curve_{k}.svg", "-i",
-                              f"{directory}/points.xy", "-e", f"{directory}/edges_{k}.edges", "--min-lfs", "0"],
-                             capture_output=True, text=True, check=True).stdout
-        epsilon = json.loads(out)["epsilon"]
-        epsilons.append(math.inf if epsilon is None else epsilon)  # null: lfs vanishes (a cusp or crossing)
-    return epsilons
-
-
 def write_case(case, x, directory, curvebench, summary):
-    os.makedirs(directory, exist_ok=True)
     samples, knots, intervals = case.unpack(x)
-    with open(f"{directory}/points.xy", "w") as f:
-        f.writelines("%r %r\n" % (float(p[0]), float(p[1])) for p in samples)
-    paths = []
-    for k, transform in ((1, np.array([1.0, 1.0])), (2, MIRROR)):
-        paths.append(bezier_path(knots, intervals, transform))
-        with open(f"{directory}/curve_{k}.svg", "w") as f:
-            f.write('<svg xmlns="http://www.w3.org/2000/svg">\n'
-                    f'<path fill="none" stroke="black" d="{paths[-1]}"/>\n</svg>\n')
-        order = case.order(k)
-        with open(f"{directory}/edges_{k}.edges", "w") as f:
-            f.writelines(f"{order[i]} {order[(i + 1) % len(order)]}\n" for i in range(len(order)))
-    epsilons = measure(curvebench, directory)
-    lo, hi = samples.min(0), samples.max(0)
-    pad, size = 0.15 * (hi - lo).max(), (hi - lo).max()
-    w = 0.004 * size
-    box = f"{lo[0] - pad} {-hi[1] - pad} {size + 2 * pad} {size + 2 * pad}"
-    dots = "".join(f'<circle cx="{p[0]}" cy="{p[1]}" r="{2.5 * w}"/>' for p in samples)
-    with open(f"{directory}/picture.svg", "w") as f:
-        f.write(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{box}" width="800" height="800">'
-                f'<title>ambiguous sampling: {len(samples)} points, epsilon {epsilons[0]!r} (C1, blue) and '
-                f'{epsilons[1]!r} (C2, red dashed)</title><g transform="scale(1,-1)">'
-                f'<path d="{paths[0]}" fill="none" stroke="#1f77b4" stroke-width="{w}"/>'
-                f'<path d="{paths[1]}" fill="none" stroke="#d62728" stroke-width="{w}" '
-                f'stroke-dasharray="{3 * w} {2 * w}"/>{dots}</g></svg>\n')
-    record = {"points": len(samples), "epsilon_1": epsilons[0], "epsilon_2": epsilons[1],
-              "max_epsilon": max(epsilons), "via_points": 2 * case.via_count,
-              "order_1": case.order(1), "order_2": case.order(2), **summary}
-    with open(f"{directory}/summary.json", "w") as f:
-        json.dump(record, f, indent=2)
-        f.write("\n")
-    with open(f"{directory}/replay.sh", "w") as f:
-        f.write("#!/bin/sh\n# Re-measures S against C1 and C2 with the project's unfloored epsilon.\n"
-                "cd \"$(dirname \"$0\")\"\n" + "".join(
-                    f"${{CURVEBENCH:-curvebench}} measure --curve svg:curve_{k}.svg -i points.xy "
-                    f"-e edges_{k}.edges --min-lfs 0\n" for k in (1, 2)))
-    os.chmod(f"{directory}/replay.sh", 0o755)
-    return epsilons
+    paths = [bezier_path(knots, intervals, transform) for transform in (np.array([1.0, 1.0]), MIRROR)]
+    record = {"via_points": 2 * case.via_count, "order_1": case.order(1), "order_2": case.order(2), **summary}
+    return case_files.write_case(directory, samples, paths, [[case.order(1)], [case.order(2)]], curvebench, record)
 
 
 def main():
