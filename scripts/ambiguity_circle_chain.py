@@ -20,14 +20,14 @@ epsilon = 0.92760. On the ring the free arcs on the outside are wider by pi/N, w
 1.1/N; at N = 16 epsilon is just below 1 (0.9965).
 
 Each circle is written as cubic Bezier arcs between its samples, none longer than --piece degrees
-(15 by default), with the standard handles: they pass through S exactly as written, meet with one
-tangent and leave the circle by less than 1e-7 r, so each curve is C1 with bounded curvature (a
-positive reach, which is what lfs needs). A C2 cubic spline through the same nodes was tried first
-and measured 5e-3 higher: its curvature errs by O(h^2). The ratio s/r is chosen by minimising the
-measured epsilon (bounded scalar search), unless --ratio is given. The epsilons recorded are
-`curvebench measure`'s on the written files (scripts/ambiguity_case_files.py); the test
-certify.ambiguity_circle_chain checks them against an exact computation on the circles themselves
-(measure reads up to 2e-4 below it, from its discretisation of the max).
+(15 by default). They pass through S exactly as written and meet with one tangent and one curvature,
+1/r, so each curve is twice differentiable in arc length, and they leave the circle by less than
+1e-7 r. A C2 cubic spline through the same nodes was tried first and measured 5e-3 higher: its
+curvature errs by O(h^2). The ratio s/r is chosen by minimising the measured epsilon (bounded scalar
+search), unless --ratio is given. The epsilons recorded are `curvebench measure`'s on the written
+files (scripts/ambiguity_case_files.py); the test certify.ambiguity_circle_chain checks them against
+an exact computation on the circles themselves (measure reads up to 2e-4 below it: its lfs, the
+distance to a sampled medial axis, errs upward by that much on the straight bisectors here).
 
 usage: scripts/ambiguity_circle_chain.py -o OUT [--circles N] [--ratio U] [--piece DEG] [--curvebench PATH]
 Needs python3-numpy and python3-scipy (scripts/setup.sh installs them).
@@ -63,9 +63,11 @@ def crossings(a, b):
 
 def arc_path(centre, r, angles, piece):
     """SVG path data of circle (centre, r) as cubic Bezier arcs from each of the given angles to the
-    next, split so that none spans more than `piece` radians. Each arc has the standard handles of
-    length 4/3 tan(phi / 4) r: its ends and their tangents are the circle's, so consecutive arcs meet
-    with one tangent, and it leaves the circle by less than 1e-7 r at 15 degrees."""
+    next, split so that none spans more than `piece` radians. An arc's ends and their tangents are
+    the circle's, and its handles, of length 2/3 r sin(phi/2) (sqrt(cos(phi/2)^2 + 3) - cos(phi/2)),
+    give it curvature exactly 1/r at both ends: consecutive arcs meet with one tangent and one
+    curvature, so the curve is twice differentiable in arc length, as the survey's smooth curve is.
+    (The usual handles, 4/3 tan(phi/4) r, agree to third order in phi but not in end curvature.)"""
     angles = sorted(angles)
     point = lambda t: centre + r * np.array([math.cos(t), math.sin(t)])
     tangent = lambda t: np.array([-math.sin(t), math.cos(t)])
@@ -75,7 +77,8 @@ def arc_path(centre, r, angles, piece):
         m = max(1, math.ceil((b - a) / piece))
         for j in range(m):
             t0, t1 = a + (b - a) * j / m, a + (b - a) * (j + 1) / m
-            handle = 4 / 3 * math.tan((t1 - t0) / 4) * r
+            half = (t1 - t0) / 2
+            handle = 2 / 3 * r * math.sin(half) * (math.sqrt(math.cos(half) ** 2 + 3) - math.cos(half))
             end = point(angles[0]) if i == len(angles) - 1 and j == m - 1 else point(t1)  # closes exactly
             d += f" C {f(point(t0) + handle * tangent(t0))} {f(end - handle * tangent(t1))} {f(end)}"
     return d + " Z"
