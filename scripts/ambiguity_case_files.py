@@ -43,7 +43,10 @@ def write_case(directory, samples, paths, cycles, curvebench, record):
     size = max(max(xs) - min(xs), max(ys) - min(ys))
     pad, w = 0.15 * size, 0.004 * size
     box = f"{min(xs) - pad} {-max(ys) - pad} {size + 2 * pad} {size + 2 * pad}"
-    dots = "".join(f'<circle cx="{x}" cy="{y}" r="{2.5 * w}"/>' for x, y in zip(xs, ys))
+    closest = min((math.hypot(xs[i] - xs[j], ys[i] - ys[j]) for i in range(len(xs)) for j in range(i)),
+                  default=size)
+    dot = min(2.5 * w, 0.2 * closest)  # dots never hide the arcs between close points
+    dots = "".join(f'<circle cx="{x}" cy="{y}" r="{dot}"/>' for x, y in zip(xs, ys))
     with open(f"{directory}/picture.svg", "w") as f:
         f.write(f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{box}" width="800" height="800">'
                 f'<title>ambiguous sampling: {len(samples)} points, epsilon {epsilons[0]!r} (C1, blue) and '
