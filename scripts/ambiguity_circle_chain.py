@@ -110,13 +110,15 @@ def main():
     parser.add_argument("-o", "--out", required=True)
     parser.add_argument("--circles", type=int, default=40, help="circles per family (N)")
     parser.add_argument("--ratio", type=float, help="s / r (default: the one minimising epsilon)")
-    parser.add_argument("--piece", type=float, default=15.0, help="longest knot interval, degrees")
+    parser.add_argument("--piece", type=float, default=15.0, help="longest Bezier arc, degrees")
     parser.add_argument("--curvebench", default=os.path.join(here, "..", "build", "bench", "curvebench"))
     args = parser.parse_args()
     n, piece = args.circles, math.radians(args.piece)
     if n < 3:
         parser.error("need at least 3 circles per family")
-    # Neighbours must cross (s < 2r); next neighbours, 2 sin(pi/n) = s / cos(pi/2n) apart, must not.
+    if not 0 < args.piece <= 90:
+        parser.error("--piece must lie in (0, 90] degrees")
+    # Neighbours must cross (s < 2r); next neighbours, 2 sin(pi/n) = 2 s cos(pi/2n) apart, must not.
     low, high = 1 / math.cos(math.pi / (2 * n)) + 1e-9, 2.0 - 1e-9
     ratio = args.ratio
     if ratio is None:
