@@ -35,6 +35,7 @@ Needs python3-numpy and python3-scipy (scripts/setup.sh installs them).
 import argparse
 import math
 import os
+import shutil
 
 import numpy as np
 from scipy.optimize import minimize_scalar
@@ -90,16 +91,20 @@ def write(directory, n, ratio, piece, curvebench, record):
     for i in range(n):
         for j in (i, (i - 1) % n):  # A circle i meets B circles i and i - 1
             for p in crossings(families[0][i], families[1][j]):
-                on[0][i].append(len(samples)), on[1][j].append(len(samples)), samples.append(p)
+                on[0][i].append(len(samples))
+                on[1][j].append(len(samples))
+                samples.append(p)
     paths, cycles = [], []
     for family, members in zip(families, on):
-        paths.append([]), cycles.append([])
+        arcs, components = [], []
         for (centre, r), indices in zip(family, members):
             angle = {q: math.atan2(samples[q][1] - centre[1], samples[q][0] - centre[0]) for q in indices}
-            cycles[-1].append(sorted(indices, key=angle.get))
-            paths[-1].append(arc_path(centre, r, list(angle.values()), piece))
+            components.append(sorted(indices, key=angle.get))
+            arcs.append(arc_path(centre, r, list(angle.values()), piece))
+        paths.append(" ".join(arcs))
+        cycles.append(components)
     circles = [[[float(c[0]), float(c[1]), float(r)] for c, r in family] for family in families]
-    return case_files.write_case(directory, samples, [" ".join(p) for p in paths], cycles, curvebench,
+    return case_files.write_case(directory, samples, paths, cycles, curvebench,
                                  {"components_1": n, "components_2": n, "ratio": ratio,
                                   "circles_1": circles[0], "circles_2": circles[1], **record})
 
@@ -126,9 +131,7 @@ def main():
         ratio = minimize_scalar(lambda u: max(write(trial, n, u, piece, args.curvebench, {})),
                                 bounds=(max(low, 1.3), min(high, 1.9)), method="bounded",
                                 options={"xatol": 1e-5}).x
-        for name in os.listdir(trial):
-            os.remove(os.path.join(trial, name))
-        os.rmdir(trial)
+        shutil.rmtree(trial)
     elif not low < ratio < high:
         parser.error(f"--ratio must lie in ({low:.6f}, {high:.6f}): neighbours cross, next ones do not")
     epsilons = write(args.out, n, ratio, piece, args.curvebench,

@@ -38,6 +38,7 @@ compiles the ratio kernel, which is then several times faster.
 import argparse
 import math
 import os
+import shutil
 import re
 import sys
 import time
@@ -433,9 +434,7 @@ def main():
                 best = (max(epsilons), y)
                 write_case(case, y, args.out, args.curvebench, {**summary, "hops_done": hop + 1})
         print(f"hop {hop + 1}: best measured {best[0]:.6f}", flush=True)
-    for name in os.listdir(trial):
-        os.remove(os.path.join(trial, name))
-    os.rmdir(trial)
+    shutil.rmtree(trial)
     summary["cpu_seconds"] = round(time.process_time() - start, 1)
     epsilons = write_case(case, best[1], args.out, args.curvebench, summary)
     print(f"written {args.out}: epsilon {epsilons[0]!r} (C1), {epsilons[1]!r} (C2)")
