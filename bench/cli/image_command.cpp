@@ -33,7 +33,7 @@ struct Image_sample_options {
 
 const char* const curve_help =
     "Curve spec of closed curves: circle:r=1, ellipse:a=2,b=1, superellipse:a=1,b=1,n=4, fourier:seed=7, "
-    "corner:angle=30, svg:FILE, glyph:[FONT:]CHAR, truth:POINTS:EDGES";
+    "corner:angle=30, svg:FILE[,corner=DEG], glyph:[FONT:]CHAR, truth:POINTS:EDGES";
 const char* const resolution_help = "Pixels on the longer side of the curve's bounding box plus a 2-pixel margin (8 to 16384)";
 
 // Boundary pixels in light grey, the ground truth and the samples, in the samples' coordinates.

@@ -56,7 +56,7 @@ void add_sample_command(CLI::App& app) {
   command->add_option("--curve", o->curve, "Curve spec: circle:r=1, ellipse:a=2,b=1, superellipse:a=1,b=1,n=4, "
                                            "fourier:seed=7[,gap=G|,components=K,separation=D], "
                                            "nested:seed=7,separation=0.1, spiral:seed=7, lissajous:a=1,b=2,seed=7, "
-                                           "corner:angle=30, star:seed=7,angle=60[,rounding=R], svg:FILE, "
+                                           "corner:angle=30, star:seed=7,angle=60[,rounding=R], svg:FILE[,corner=DEG], "
                                            "glyph:[FONT:]CHAR")
       ->required();
   auto* how = command->add_option_group("sampler", "exactly one sampler");

@@ -98,9 +98,12 @@ geometry::Sample sampled(const geometry::Local_feature_size& lfs, const Settings
   return geometry::with_crossing_samples(lfs, std::move(sample));
 }
 
-// A curve spec with its file resolved: svg:FILE, truth:POINTS:EDGES.
+// A curve spec with its file resolved: svg:FILE[,corner=DEGREES], truth:POINTS:EDGES.
 std::string resolved_spec(std::string_view spec) {
-  if (spec.starts_with("svg:")) return "svg:" + resolve_data_path(spec.substr(4)).string();
+  if (spec.starts_with("svg:")) {
+    const auto [file, options] = geometry::split_svg_options(spec.substr(4));
+    return "svg:" + resolve_data_path(file).string() + std::string(options);
+  }
   if (spec.starts_with("truth:")) {
     const std::string_view files = spec.substr(6);
     const auto colon = files.find(':');

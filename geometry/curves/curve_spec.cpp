@@ -99,6 +99,12 @@ std::pair<std::string_view, std::string_view> split_last(std::string_view text) 
 
 }  // namespace
 
+std::pair<std::string_view, std::string_view> split_svg_options(std::string_view rest) {
+  const auto comma = rest.rfind(',');
+  if (comma == std::string_view::npos || rest.substr(comma + 1).find('=') == std::string_view::npos) return {rest, {}};
+  return {rest.substr(0, comma), rest.substr(comma)};
+}
+
 Curve make_curve(std::string_view spec) {
   const auto colon = spec.find(':');
   const std::string_view kind = spec.substr(0, colon), rest = colon == std::string_view::npos ? "" : spec.substr(colon + 1);
@@ -138,8 +144,12 @@ Curve make_curve(std::string_view spec) {
     return star_polygon(p.get<std::uint64_t>("seed", 0), p.get("angle", 60.0), p.get("rounding", 0.0));
   }
   if (kind == "svg") {
-    if (rest.empty()) fail("svg needs a file: svg:FILE");
-    return read_svg_curve(rest);
+    const auto [file, options] = split_svg_options(rest);
+    if (file.empty()) fail("svg needs a file: svg:FILE[,corner=DEGREES]");
+    const double corner =
+        Parameters(kind, options.empty() ? options : options.substr(1), {"corner"}).get("corner", default_svg_corner_degrees);
+    if (!(corner >= 0 && corner <= 180)) fail("svg: corner=" + format_number(corner) + " is not in [0, 180] degrees");
+    return read_svg_curve(file, corner);
   }
   if (kind == "glyph") {
     const auto [font, character] = split_last(rest);

@@ -15,7 +15,9 @@
 //   lissajous[:a=A,b=B,seed=S]                     crossing itself 2ab-a-b times; a=1,b=2
 //   corner[:angle=DEGREES]                         default angle=30
 //   star[:seed=S,angle=DEGREES,rounding=R]         a star polygon; angle=60, rounding=0
-//   svg:FILE                                       every path of an SVG file
+//   svg:FILE[,corner=DEGREES]                      every path of an SVG file; joins turning
+//                                                  by less than DEGREES are smooth (svg_path.h);
+//                                                  default 1, 0 keeps every join as written
 //   glyph:[FONTFILE:]CHAR                          CHAR: one UTF-8 character or U+XXXX
 //                                                  (':' must be U+003A); default font DejaVu Sans
 //   truth:POINTFILE:EDGEFILE                       a ground truth (polyline_curve.h)
@@ -25,11 +27,16 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry/curves/curve.h"
 
 namespace curvebench::geometry {
+
+// The rest of an svg:FILE[,corner=DEGREES] spec split into FILE and its options (",corner=..."
+// or empty): a file name may hold commas, so only a last item with '=' is an option.
+std::pair<std::string_view, std::string_view> split_svg_options(std::string_view rest);
 
 // Throws std::invalid_argument with a one-line message naming the malformed part (unknown
 // kind or key, bad number, missing file name, invalid character); errors of the curve

@@ -1,7 +1,21 @@
 // Turns drawing commands (SVG path data, font outlines) into curve components, so that
 // every path-like source treats degenerate input alike: the pieces of a curve must be
 // regular and join (curve.h), while drawings contain zero-length segments, lone points,
-// control points on end points and closing gaps left by rounding.
+// control points on end points, closing gaps and kinks left by rounding.
+//
+// Corners. A drawing program writes a node meant to be smooth with its two handles
+// collinear, then rounds every coordinate (Inkscape: 6 digits), so the tangent turns there
+// by 1e-6 to 1e-5 rad (data/svg/). Taken as drawn, each such join is a sharp corner, where
+// lfs is 0 and every sampling condition needs samples piling up. With a `corner_angle`, a
+// join whose tangent turns by less than it is made exactly G1 before the pieces are made:
+// the Bézier handle(s) that set the two tangents there are turned onto one line (the
+// bisector of the two tangents, or the line segment's direction if one side is a line),
+// each keeping its length. So the curve that is sampled, measured and scored is smooth
+// there by construction, and lies within (4/9) |handle| * angle of the drawing (the
+// largest Bernstein weight of an inner control point times its move). A join of two line
+// segments has no handle to turn and stays a corner, and so does a join that a cubic with
+// one free control point shares with its other end, if the point where both lines cross
+// is farther than `corner_angle` times the handle lengths from where it was.
 #pragma once
 
 #include <vector>
@@ -16,6 +30,10 @@ namespace curvebench::geometry {
 // left without any segment with them), cubics become pieces by append_cubic_bezier().
 class Path_builder {
  public:
+  // Joins whose unit tangent turns by less than `corner_angle` radians are made smooth (see
+  // above); 0 keeps every join as drawn.
+  explicit Path_builder(double corner_angle = 0) : corner_angle_(corner_angle) {}
+
   void move_to(const Point& p);
   void line_to(const Point& p);
   void quadratic_to(const Point& control, const Point& p);  // elevated to a cubic
@@ -35,6 +53,7 @@ class Path_builder {
  private:
   void end_subpath(bool closed);
 
+  double corner_angle_;
   Point start_ = CGAL::ORIGIN, current_ = CGAL::ORIGIN;
   std::vector<std::vector<Point>> segments_;  // of the current subpath: ends of a line, or cubic control points
   std::vector<Curve_component> components_;

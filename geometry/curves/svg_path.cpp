@@ -98,7 +98,8 @@ class Scanner {
 // commands add to them, and go to the Path_builder transformed.
 class Path_parser {
  public:
-  Path_parser(std::string_view data, const Affine_transformation& transform) : scanner_(data), transform_(transform) {}
+  Path_parser(std::string_view data, const Affine_transformation& transform, double corner_angle)
+      : scanner_(data), transform_(transform), builder_(corner_angle) {}
 
   std::vector<Curve_component> parse() {
     char command = 0;
@@ -284,8 +285,8 @@ class Svg_tag_scanner {
 
 }  // namespace
 
-Curve parse_svg_path(std::string_view data, const Affine_transformation& transform) {
-  return Curve{"svg-path", Path_parser(data, transform).parse()};
+Curve parse_svg_path(std::string_view data, const Affine_transformation& transform, double corner_angle) {
+  return Curve{"svg-path", Path_parser(data, transform, corner_angle).parse()};
 }
 
 Affine_transformation parse_svg_transform(std::string_view list) {
@@ -331,9 +332,12 @@ Affine_transformation parse_svg_transform(std::string_view list) {
   return result;
 }
 
-Curve read_svg_curve(const std::filesystem::path& file) {
+Curve read_svg_curve(const std::filesystem::path& file, double corner_degrees) {
+  if (!(corner_degrees >= 0 && corner_degrees <= 180))
+    throw std::invalid_argument("svg: the corner angle must be in [0, 180] degrees");
+  const double corner_angle = corner_degrees * std::numbers::pi / 180;
   Svg_tag_scanner scanner(read_text_file(file), file.string());
-  Curve curve{"svg:" + file.string(), {}};
+  Curve curve{"svg:" + file.string() + (corner_degrees == default_svg_corner_degrees ? "" : ",corner=" + format_number(corner_degrees)), {}};
   std::vector<Affine_transformation> open{Affine_transformation()};  // of each open element, the document's first
   while (const auto tag = scanner.next()) {
     if (tag->end) {
@@ -356,7 +360,7 @@ Curve read_svg_curve(const std::filesystem::path& file) {
     Affine_transformation transform = open.back();
     if (const auto offset = attribute("transform")) transform = transform * parsed("transform", *offset, parse_svg_transform);
     if (const auto offset = attribute("d"); offset && tag->name == "path") {
-      auto path = parsed("d", *offset, [&](std::string_view data) { return parse_svg_path(data, transform); });
+      auto path = parsed("d", *offset, [&](std::string_view data) { return parse_svg_path(data, transform, corner_angle); });
       std::move(path.components.begin(), path.components.end(), std::back_inserter(curve.components));
     }
     if (!tag->self_closing) open.push_back(transform);

@@ -32,6 +32,11 @@ TEST(CurveSpec, MakesEveryKindWithDefaults) {
   EXPECT_EQ(make_curve("corner:angle=45").components[0].corners().size(), 1u);
   const std::string blob = CURVEBENCH_SOURCE_DIR "/data/svg/blob2.svg";
   EXPECT_EQ(make_curve("svg:" + blob).components.size(), 1u);
+  // Rounding kinks are smooth by default (svg_path.h); corner=0 keeps the joins as written.
+  EXPECT_TRUE(make_curve("svg:" + blob).components[0].corners().empty());
+  EXPECT_EQ(make_curve("svg:" + blob + ",corner=0").components[0].corners().size(), 6u);
+  EXPECT_EQ(make_curve("svg:" + blob + ",corner=0").name, "svg:" + blob + ",corner=0");
+  EXPECT_EQ(make_curve("svg:" + blob + ",corner=1").name, "svg:" + blob);
   EXPECT_EQ(make_curve("glyph:O").components.size(), 2u);
   EXPECT_EQ(make_curve("glyph:" + default_glyph_font.string() + ":B").components.size(), 3u);
   EXPECT_EQ(make_curve("glyph:U+0069").components.size(), 2u);
@@ -46,6 +51,12 @@ TEST(CurveSpec, NamesAreSpecsOfTheSameCurve) {
     const Curve curve = make_curve(spec), again = make_curve(curve.name);
     EXPECT_EQ(again.name, curve.name);
     EXPECT_EQ(again.length(), curve.length()) << spec;
+  }
+  for (const char* option : {"", ",corner=0", ",corner=2.5"}) {
+    const Curve curve = make_curve(std::string("svg:" CURVEBENCH_SOURCE_DIR "/data/svg/Spidy.svg") + option);
+    const Curve again = make_curve(curve.name);
+    EXPECT_EQ(again.name, curve.name);
+    EXPECT_EQ(again.length(), curve.length()) << option;
   }
 }
 
@@ -103,6 +114,11 @@ TEST(CurveSpec, MalformedSpecsNameTheBadPart) {
       {"corner:angle=0", "angle"},
       {"svg", "svg:FILE"},
       {"svg:", "svg:FILE"},
+      {"svg:,corner=1", "svg:FILE"},
+      {"svg:a.svg,corner=-1", "[0, 180]"},
+      {"svg:a.svg,corner=181", "[0, 180]"},
+      {"svg:a.svg,corner=x", "'x'"},
+      {"svg:a.svg,sharp=1", "'sharp'"},
       {"glyph:", "''"},
       {"glyph:ab", "'ab'"},
       {"glyph:U+110000", "'U+110000'"},

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <regex>
 #include <string>
 
@@ -254,9 +257,139 @@ TEST(SvgFile, EveryBundledDrawingLoadsWithOneComponentPerSubpath) {
 }
 
 TEST(SvgFile, ClosedBundledBlobsAreSmooth) {
-  // Their Z gaps are rounding of relative coordinates: closed without spurious corners.
-  for (const char* name : {"simple.svg", "complex.svg", "blob2.svg"})
-    EXPECT_TRUE(read_svg_curve(svg_data(name)).components[0].corners(1e-3).empty()) << name;
+  // Their Z gaps are rounding of relative coordinates, and so are their kinks of 1e-8 to
+  // 1.1e-5 rad: smooth curves, as the survey samples them.
+  for (const char* name : {"simple.svg", "complex.svg", "blob2.svg", "spiral.svg"})
+    EXPECT_TRUE(read_svg_curve(svg_data(name)).components[0].corners().empty()) << name;
+  // As written, blob2's kinks are joins whose tangent turns by more than 1e-6 rad.
+  EXPECT_FALSE(read_svg_curve(svg_data("blob2.svg"), 0).components[0].corners().empty());
+  EXPECT_TRUE(read_svg_curve(svg_data("blob2.svg"), 0).components[0].corners(1e-4).empty());
+}
+
+// The turn of the unit tangent at each join of a component (its start too if closed).
+std::vector<double> join_turns(const Curve_component& c) {
+  std::vector<double> turns;
+  const std::size_t n = c.piece_count();
+  for (std::size_t i = c.closed() ? 0 : 1; i < n; ++i) {
+    const Vector a = c.piece((i + n - 1) % n).derivative(1), b = c.piece(i).derivative(0);
+    turns.push_back(std::atan2(std::abs(CGAL::determinant(a, b)), a * b));
+  }
+  return turns;
+}
+
+TEST(SvgFile, CornersAreTheJoinsTurningByADegreeOrMoreAsDrawn) {
+  // Counted on the curve as written; the default keeps exactly those as corners (Spidy, f2
+  // and f6 have corners of 3.4 degrees and more; every other join turns by under 0.1).
+  std::size_t all = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(svg_data(""))) {
+    if (entry.path().extension() != ".svg") continue;
+    const Curve drawn = read_svg_curve(entry.path(), 0), smoothed = read_svg_curve(entry.path());
+    ASSERT_EQ(drawn.components.size(), smoothed.components.size());
+    for (std::size_t c = 0; c < drawn.components.size(); ++c) {
+      const std::vector<double> turns = join_turns(drawn.components[c]);
+      const auto corners = std::count_if(turns.begin(), turns.end(), [](double t) { return t >= std::numbers::pi / 180; });
+      EXPECT_EQ(smoothed.components[c].corners().size(), std::size_t(corners)) << entry.path() << " component " << c;
+      all += smoothed.components[c].corners().size();
+    }
+    EXPECT_TRUE(valid_curve(smoothed));
+  }
+  EXPECT_EQ(all, 11u);  // the check can fail: Spidy's 7, f2's 3 and f6's 1
+}
+
+// The control points of piece i, which must be a cubic.
+const std::array<Point, 4>& controls(const Curve& curve, std::size_t i) {
+  return dynamic_cast<const Cubic_bezier&>(curve.components[0].piece(i)).control_points();
+}
+
+constexpr double one_degree = std::numbers::pi / 180;
+
+TEST(SvgPath, NearSmoothJoinsBecomeExactlySmooth) {
+  // Two cubics meeting at (3, 0), tangents (1, -1e-5) in and (1, 1e-5) out: a kink of 2e-5.
+  const std::string data = "M0 0 C1 1 2 1e-5 3 0 C4 1e-5 5 -1 6 0";
+  const Curve drawn = parse_svg_path(data), smoothed = parse_svg_path(data, {}, one_degree);
+  EXPECT_EQ(drawn.components[0].corners().size(), 1u);
+  EXPECT_TRUE(smoothed.components[0].corners().empty());
+  // Both handles turned onto the bisector (the x axis) about the join, keeping their length.
+  const double handle = std::hypot(1, 1e-5);
+  EXPECT_EQ(controls(smoothed, 0)[2], Point(3 - handle, 0));
+  EXPECT_EQ(controls(smoothed, 1)[1], Point(3 + handle, 0));
+  // A handle moves by |h| * 1e-5, the curve by at most 4/9 of that.
+  EXPECT_TRUE(same_curve(drawn, smoothed, 4.0 / 9 * handle * 1e-5 * (1 + 1e-9)));
+  EXPECT_FALSE(same_curve(drawn, smoothed, 1e-7 * 4.0 / 9 * handle * 1e-5));
+}
+
+TEST(SvgPath, ALineSetsTheDirectionOfTheCubicBesideIt) {
+  const Curve smoothed = parse_svg_path("M0 0 L3 0 C4 1e-5 5 1 6 0", {}, one_degree);
+  EXPECT_TRUE(smoothed.components[0].corners().empty());
+  EXPECT_EQ(smoothed.components[0].point(1), Point(3, 0));
+  EXPECT_EQ(controls(smoothed, 1)[1], Point(3 + std::hypot(1, 1e-5), 0));
+  // Two lines have no handle to turn: their kink stays a corner, as drawn.
+  EXPECT_EQ(parse_svg_path("M0 0 L3 0 L6 1e-5", {}, one_degree).components[0].corners().size(), 1u);
+  // So does a turn of a degree or more.
+  EXPECT_EQ(parse_svg_path("M0 0 C1 1 2 0.1 3 0 C4 0 5 -1 6 0", {}, one_degree).components[0].corners().size(), 1u);
+}
+
+TEST(SvgPath, AHandleSettingBothTangentsGoesWhereTheirLinesCross) {
+  // The cubic's first control point is on its start, so its second one sets both of its
+  // tangents: along the line y = 0 before it and the line y = x - 2 after it.
+  const Curve smoothed = parse_svg_path("M0 0 L1 0 C1 0 2 1e-5 3 1 L4 2", {}, one_degree);
+  EXPECT_TRUE(smoothed.components[0].corners().empty());
+  const Point moved = controls(smoothed, 1)[2];
+  EXPECT_NEAR(moved.x(), 2, 1e-12);
+  EXPECT_NEAR(moved.y(), 0, 1e-12);
+}
+
+TEST(SvgPath, TheClosingJoinIsSmoothedToo) {
+  const Curve smoothed = parse_svg_path("M0 0 C1 1e-5 2 2 0 2 C-2 2 -1 1e-5 0 0 Z", {}, one_degree);
+  ASSERT_TRUE(smoothed.components[0].closed());
+  EXPECT_TRUE(smoothed.components[0].corners().empty());
+  EXPECT_EQ(parse_svg_path("M0 0 C1 1e-5 2 2 0 2 C-2 2 -1 1e-5 0 0 Z").components[0].corners(), std::vector<double>{0});
+}
+
+TEST(SvgPath, KinksBelowTheCornerAngleAreSmoothAndTheRestCorners) {
+  // Closed chains of cubics through points of a circle, each join's handles turned apart by
+  // a random kink, some below one degree (0.9 degrees to 1.6e-7 rad) and some above (2 to 20 degrees).
+  EXPECT_TRUE(rc::check("corners = joins kinked by a degree or more", [] {
+    const int joins = *rc::gen::inRange(2, 7);
+    std::vector<Point> at;
+    std::vector<Vector> in, out;
+    std::size_t kinked = 0;
+    double longest = 0;
+    for (int j = 0; j < joins; ++j) {
+      const double angle = 2 * std::numbers::pi * j / joins;
+      const bool corner = *rc::gen::arbitrary<bool>();
+      kinked += corner;
+      const double kink = corner ? one_degree * (2 + *rc::gen::inRange(0, 1000) * 0.018)
+                                 : one_degree * 0.9 * std::pow(10, -5e-3 * *rc::gen::inRange(0, 1001));
+      const double direction = angle + std::numbers::pi / 2 + (*rc::gen::inRange(-100, 101)) * 1e-3;
+      const double lengths[] = {0.5 + *rc::gen::inRange(0, 150) * 0.01, 0.5 + *rc::gen::inRange(0, 150) * 0.01};
+      longest = std::max({longest, lengths[0], lengths[1]});
+      at.emplace_back(10 * std::cos(angle), 10 * std::sin(angle));
+      in.push_back(lengths[0] * Vector(std::cos(direction - kink / 2), std::sin(direction - kink / 2)));
+      out.push_back(lengths[1] * Vector(std::cos(direction + kink / 2), std::sin(direction + kink / 2)));
+    }
+    char number[64];
+    std::string data;
+    const auto put = [&](const Point& p) {
+      std::snprintf(number, sizeof number, " %.17g %.17g", p.x(), p.y());
+      data += number;
+    };
+    data += "M";
+    put(at[0]);
+    for (int j = 0; j < joins; ++j) {
+      const int next = (j + 1) % joins;
+      data += " C";
+      put(at[j] + out[j]);
+      put(at[next] - in[next]);
+      put(at[next]);
+    }
+    data += " Z";
+    const Curve drawn = parse_svg_path(data), smoothed = parse_svg_path(data, {}, one_degree);
+    RC_ASSERT(smoothed.components.size() == 1u);
+    RC_ASSERT(smoothed.components[0].corners().size() == kinked);
+    for (const double turn : join_turns(smoothed.components[0])) RC_ASSERT(turn < 1e-9 || turn > one_degree);
+    RC_ASSERT(same_curve(drawn, smoothed, 4.0 / 9 * longest * one_degree));
+  }));
 }
 
 TEST(SvgFile, AppliesTransformsOfThePathAndItsAncestors) {
