@@ -21,9 +21,9 @@
 // starting from where a random curve crosses its mirror image: eps2 = eps1 throughout, and
 // the orders differ globally, as a curve differs from its mirror image.
 //
-// Not a proof: the lfs is an estimate (local_feature_size.h: converges from above,
-// measured maximum relative error 1.9e-4 at the default density, so a measured epsilon
-// may be low by that factor), and the search only sees curves of this spline family.
+// Not a proof: the lfs is an estimate (local_feature_size.h: converges from above, at most
+// 2e-4 high relative plus its resolution, so a measured epsilon may be low by about that
+// factor), and the search only sees curves of this spline family.
 // The search decides on doubles: it is an experiment's driver, not an algorithm, and
 // none of its decisions feed a reconstruction.
 #pragma once
@@ -157,9 +157,11 @@ Ambiguity_files write_ambiguity_case(const std::filesystem::path& directory, con
                                      const Ambiguity_measure& measure, std::uint64_t seed,
                                      std::span<const std::pair<std::string, double>> extra = {});
 
-// The relative error of the lfs estimate at the default density as local_feature_size.h
-// documents it (measured on circles and ellipses against closed forms). Not a proof bound:
-// on a found case with a tight Z-fold, re-measuring at density 128 moved epsilon by 3.9e-4.
+// The relative error of the lfs estimate at the default density as measured on circles and
+// ellipses against closed forms before the ends of medial-axis branches were given exactly
+// (now 9.5e-5; local_feature_size.h states 2e-4 plus the resolution): kept, so that the
+// committed cases' summaries replay. Not a proof bound: on a found case with a tight
+// Z-fold, re-measuring at density 128 moved epsilon by 3.9e-4.
 inline constexpr double lfs_relative_error_bound = 1.9e-4;
 
 }  // namespace curvebench::certify

@@ -8,6 +8,7 @@
 
 #include "geometry/bounding_box_diagonal.h"
 #include "geometry/curves/curve_crossings.h"
+#include "geometry/lfs/nearest_point_index.h"
 
 namespace curvebench::geometry {
 namespace {
@@ -39,10 +40,12 @@ std::vector<Point> points_of(std::span<const Sharp_point> sharp_points) {
   return points;
 }
 
-// The medial axis of the dense sample at `parameters`.
+// The medial axis of the dense sample at `parameters`, with the exact points given.
 Medial_axis medial_axis_at(const Curve& curve, const std::vector<std::vector<double>>& parameters,
-                           std::span<const Sharp_point> sharp_points) {
-  return Medial_axis(points_at(curve, parameters), chains_of(curve, parameters), points_of(sharp_points));
+                           std::span<const Sharp_point> sharp_points, std::span<const Point> branch_ends = {}) {
+  std::vector<Point> exact = points_of(sharp_points);
+  exact.insert(exact.end(), branch_ends.begin(), branch_ends.end());
+  return Medial_axis(points_at(curve, parameters), chains_of(curve, parameters), exact);
 }
 
 // Cuts every chord of the dense sample that is long for the lfs estimate at its ends and
@@ -94,6 +97,86 @@ bool same_parameter(const Curve_component& component, double s, double t) {
   return d <= tolerance || (component.closed() && std::abs(d - n) <= tolerance);
 }
 
+// Signed curvature of a piece at t (at t = 0 or 1: that end's one-sided value).
+double curvature_of(const Curve_piece& piece, double t) {
+  const Vector d = piece.derivative(t), dd = piece.second_derivative(t);
+  const double speed = std::sqrt(d * d);
+  return CGAL::determinant(d, dd) / (speed * speed * speed);
+}
+
+// The ends of the medial axis' branches: the centres of curvature at the local maxima of
+// |curvature| (inside a piece, or at a join from either side) whose osculating disc holds
+// no point of the dense sample. Such a disc is the largest empty one touching the curve
+// there, so its centre is a medial point. Voronoi vertices of the dense sample reach a
+// branch's end only to about |dR/ds| times the sample spacing (R the radius of curvature,
+// which changes fastest there): on f5.svg, where the curvature jumps 50-fold at a Bézier
+// join, they stopped 20 units (16 % of lfs) short of it and lfs read that much high.
+//
+// A maximum whose radius is below `resolution` is a point where the medial axis reaches
+// the curve: a Bézier end whose handle lies on it (Inkscape's "c 0,0", 250 of them in
+// data/svg/, mostly at the ends of open strokes), where the curvature is unbounded
+// (cubic_bezier.h). Those are sharp points, as corners are.
+struct Branch_ends {
+  std::vector<Point> centres;
+  std::vector<Sharp_point> singular;
+};
+
+Branch_ends branch_ends(const Curve& curve, const std::vector<std::vector<double>>& parameters, double resolution) {
+  const std::vector<Point> sample = points_at(curve, parameters);
+  const Nearest_point_index nearest(sample);
+  Branch_ends found;
+  for (std::size_t c = 0; c < curve.components.size(); ++c) {
+    const Curve_component& component = curve.components[c];
+    const std::vector<double>& dense = parameters[c];
+    for (std::size_t i = 0; i < component.piece_count(); ++i) {
+      const Curve_piece& piece = component.piece(i);
+      // The piece's own parameters: its ends and the dense ones inside.
+      std::vector<double> t{0};
+      for (auto it = std::upper_bound(dense.begin(), dense.end(), double(i)); it != dense.end() && *it < double(i + 1); ++it)
+        t.push_back(*it - double(i));
+      t.push_back(1);
+      std::vector<double> kappa;
+      for (const double u : t) kappa.push_back(curvature_of(piece, u));
+      for (const double sign : {1.0, -1.0})
+        for (std::size_t j = 0; j < t.size(); ++j) {
+          const auto value = [&](std::size_t k) { return sign * kappa[k]; };
+          if (!(value(j) > 0) || (j > 0 && value(j - 1) > value(j)) || (j + 1 < t.size() && value(j + 1) > value(j))) continue;
+          // Golden-section search for the maximum between the neighbours; a one-sided
+          // maximum at an end of the piece is that end itself.
+          double low = t[j > 0 ? j - 1 : 0], high = t[j + 1 < t.size() ? j + 1 : j];
+          constexpr double golden = 0.6180339887498949;
+          for (int step = 0; step < 60 && high - low > 1e-15; ++step) {
+            const double a = high - golden * (high - low), b = low + golden * (high - low);
+            if (sign * curvature_of(piece, a) < sign * curvature_of(piece, b))
+              low = a;
+            else
+              high = b;
+          }
+          double u = (low + high) / 2;
+          for (const double end : {0.0, 1.0})
+            if (std::abs(u - end) <= 1e-9 && sign * curvature_of(piece, end) >= sign * curvature_of(piece, u)) u = end;
+          const double k = curvature_of(piece, u);
+          if (!(sign * k > 0)) continue;
+          if (!(1 / std::abs(k) > resolution)) {
+            double at = double(i) + u;
+            if (component.closed() && at >= piece_count(component)) at -= piece_count(component);
+            const bool corner = std::ranges::any_of(component.corners(), [&](double s) { return same_parameter(component, s, at); });
+            const bool listed = std::ranges::any_of(found.singular, [&](const Sharp_point& p) {
+              return p.location.component == c && same_parameter(component, p.location.parameter, at);
+            });
+            if (!corner && !listed) found.singular.push_back({piece.point(u), {c, at}, Sharp_point::Kind::unbounded_curvature});
+            continue;
+          }
+          const Vector d = piece.derivative(u);
+          const Vector normal = d.perpendicular(CGAL::COUNTERCLOCKWISE) / std::sqrt(d * d);
+          const Point centre = piece.point(u) + normal / k;
+          if (nearest.distance(centre) >= (1 - 1e-9) / std::abs(k)) found.centres.push_back(centre);
+        }
+    }
+  }
+  return found;
+}
+
 }  // namespace
 
 struct Local_feature_size::Estimate {
@@ -120,20 +203,26 @@ Local_feature_size::Local_feature_size(const Curve& curve, double density, doubl
         const std::vector<Point> initial = points_at(curve, parameters);
         const double diagonal = geometry::bounding_box_diagonal(initial);
 
-        Medial_axis axis = medial_axis_at(curve, parameters, sharp_points);
+        // The branch ends found on the first sample serve the refinement; those of the
+        // final sample (whose emptiness test is finer) replace them if they differ.
+        Branch_ends ends = branch_ends(curve, parameters, resolution * diagonal);
+        sharp_points.insert(sharp_points.end(), ends.singular.begin(), ends.singular.end());
+        Medial_axis axis = medial_axis_at(curve, parameters, sharp_points, ends.centres);
         for (int round = 0; round < maximum_rounds; ++round) {
           bool changed = false;
           for (std::size_t c = 0; c < curve.components.size(); ++c)
             changed |= refine(curve.components[c], parameters[c], axis, density, resolution * diagonal);
           if (!changed) break;
-          axis = medial_axis_at(curve, parameters, sharp_points);
+          axis = medial_axis_at(curve, parameters, sharp_points, ends.centres);
         }
         const std::vector<Curve_crossing> crossings = curve_crossings(curve, parameters);
         for (const Curve_crossing& crossing : crossings) {
-          sharp_points.push_back({crossing.point, crossing.first});
-          sharp_points.push_back({crossing.point, crossing.second});
+          sharp_points.push_back({crossing.point, crossing.first, Sharp_point::Kind::crossing});
+          sharp_points.push_back({crossing.point, crossing.second, Sharp_point::Kind::crossing});
         }
-        if (!crossings.empty()) axis = medial_axis_at(curve, parameters, sharp_points);
+        const std::vector<Point> final_centres = branch_ends(curve, parameters, resolution * diagonal).centres;
+        if (!crossings.empty() || final_centres != ends.centres)
+          axis = medial_axis_at(curve, parameters, sharp_points, final_centres);
         return Estimate{diagonal, std::move(parameters), std::move(sharp_points), std::move(axis)};
       }()) {}
 

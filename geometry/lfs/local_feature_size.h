@@ -16,21 +16,43 @@
 // Measured: maximum relative error against the closed form over 2000 points of a circle
 // (lfs = r) and of ellipses x²/a² + y²/b² = 1, a/b = 1.25, 2, 4, 8 (lfs = distance to the
 // segment between (±(a²-b²)/a, 0)), with the size and build time of the estimate for
-// a/b = 8. The error falls as 1 / density²; the default, 32, keeps it 5x below 1e-3
-// (the test LocalFeatureSize.MatchesTheEllipseClosedFormWithinOnePerMille):
+// a/b = 8 (2-core machine, 2026-12-06, with the branch ends below). The error falls as
+// 1 / density²; the default, 32, keeps it 10x below 1e-3 (the test
+// LocalFeatureSize.MatchesTheEllipseClosedFormWithinOnePerMille):
 //
 //   density | max relative error | dense points (a/b = 8) | build (a/b = 8)
 //   --------+--------------------+------------------------+----------------
-//        4  |       1.2e-2       |          288           |     0.6 ms
-//        8  |       3.1e-3       |          532           |     1.1 ms
-//       16  |       5.9e-4       |         1036           |     1.9 ms
-//       32  |       1.9e-4       |         1856           |     5.2 ms
-//       64  |       5.6e-5       |         3540           |     9.9 ms
-//      128  |       1.3e-5       |         8192           |    17.9 ms
+//        4  |       5.2e-3       |          256           |     1.0 ms
+//        8  |       1.3e-3       |          524           |     1.7 ms
+//       16  |       2.9e-4       |         1036           |     4.6 ms
+//       32  |       9.5e-5       |         1856           |     6.8 ms
+//       64  |       2.7e-5       |         3512           |    16.1 ms
+//      128  |       6.2e-6       |         8192           |    27.7 ms
 //
-// Sharp points: the corners of each component (Curve_component::corners()) and the
-// crossings of components (curve_crossings.h) are points of the medial axis' closure, so
-// lfs is exactly 0 there and tends to 0 linearly nearby; samplers floor it.
+// The bound it states (stated_relative_error): at the default density and resolution the
+// estimate reads at most lfs (1 + 2e-4) + resolution x diagonal. Checked against an oracle
+// that shares nothing with this code (maximal empty balls of a dense sample by shrinking,
+// tests/certify/lfs_oracle_test.cpp) where epsilon 0.2, 0.33 and 0.5 samplings attain their
+// epsilon and at 50 of their samples each, on the 19 files of data/svg/ and 8 analytic
+// curves: at most 9.6e-5 above it, relative, on every curve whose curvature is bounded;
+// up to 9.4e-4 relative but 9.6e-6 of the diagonal absolute (Goldi.svg: 0.76 of the
+// bound's slack) within a few resolutions of a point of unbounded curvature, where the
+// refinement stops at the resolution.
+//
+// Sharp points: the corners of each component (Curve_component::corners()), the
+// crossings of components (curve_crossings.h) and the points where the curvature is
+// unbounded (radius of curvature below `resolution` of the diagonal: a Bézier end whose
+// handle lies on it, Inkscape's "c 0,0", where the curve goes like y ~ x^(3/2)) are
+// points of the medial axis' closure, so lfs is exactly 0 there and tends to 0 linearly
+// nearby; samplers floor it.
+//
+// Branch ends: where the radius of curvature R changes fast, Voronoi vertices reach the
+// end of a medial-axis branch (the centre of curvature at a curvature maximum) only to
+// within about |dR/ds| times the sample spacing. At Bézier joins that are G1 but not G2
+// the curvature jumps (50-fold on f5.svg), and lfs there read 16 % high. So the centres of
+// curvature at the local maxima of |curvature| (inside pieces and on either side of each
+// join) whose osculating disc is empty of the dense sample are added as exact medial
+// points.
 #pragma once
 
 #include <atomic>
@@ -46,14 +68,24 @@
 namespace curvebench::geometry {
 
 struct Sharp_point {
+  enum class Kind {
+    corner,               // Curve_component::corners()
+    crossing,             // listed once for each branch through it
+    unbounded_curvature,  // a Bézier end whose handle lies on it (see above)
+  };
   Point point;
-  Curve_location location;  // a crossing is listed once for each branch through it
+  Curve_location location;
+  Kind kind = Kind::corner;
 };
 
 class Local_feature_size {
  public:
   static constexpr double default_density = 32;
   static constexpr double default_resolution = 1e-5;
+  // How far above the true lfs the estimate may read at the default density and
+  // resolution: lfs (1 + stated_relative_error) + resolution x the bounding-box diagonal
+  // (measured: see the header comment).
+  static constexpr double stated_relative_error = 2e-4;
 
   // Throws std::invalid_argument unless density and resolution are positive and finite.
   explicit Local_feature_size(const Curve& curve, double density = default_density,

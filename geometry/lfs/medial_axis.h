@@ -14,7 +14,8 @@
 // 5e-4 of lfs at a gap's ends. Elsewhere vertices are dense along the medial axis.
 //
 // Points of the medial axis' closure that a sample can only approach (sharp corners,
-// crossings) are given exactly and added as they are. Local_feature_size builds the dense
+// crossings, the ends of branches at curvature maxima) are given exactly and added as
+// they are. Local_feature_size builds the dense
 // sample; this class only turns a sample into medial points and answers distances.
 #pragma once
 

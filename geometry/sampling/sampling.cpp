@@ -484,6 +484,7 @@ Sample with_crossing_samples(const Local_feature_size& lfs, Sample sample) {
   };
   std::vector<Crossing> crossings;
   for (const Sharp_point& sharp : lfs.sharp_points()) {
+    if (sharp.kind != Sharp_point::Kind::crossing) continue;
     const auto same = std::ranges::find(crossings, sharp.point, &Crossing::point);
     if (same == crossings.end())
       crossings.push_back({sharp.point, {sharp.location}});

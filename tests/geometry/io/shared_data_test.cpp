@@ -140,7 +140,7 @@ TEST(SharedData, EachGtnHoldsThePointsOfItsP2d) {
 TEST(BundledData, FilesAreExactCopiesOfTheSharedOriginals) {
   SKIP_WITHOUT_SHARED_DATA();
   std::size_t files = 0;
-  for (const char* folder : {"svg", "stretchdenoise", "hnncrust"}) {
+  for (const char* folder : {"svg", "stretchdenoise", "hnncrust"}) {  // sample2d/ is ours: made from svg/
     for (const auto& entry : fs::directory_iterator(kSharedData / folder)) {
       SCOPED_TRACE(entry.path().string());
       ++files;
@@ -168,7 +168,7 @@ TEST(BundledData, ManifestListsEveryPointFileWithItsPointCount) {
     EXPECT_EQ(count, oracle_point_count(path));
     EXPECT_EQ(count, read_point_file(path).points.size());
   }
-  for (const char* folder : {"svg", "stretchdenoise", "hnncrust"}) {
+  for (const char* folder : {"svg", "sample2d", "stretchdenoise", "hnncrust"}) {
     for (const auto& entry : fs::directory_iterator(kBundledData / folder)) {
       EXPECT_NE(std::ranges::find(listed, entry.path()), listed.end())
           << entry.path() << " is missing from the manifest";
