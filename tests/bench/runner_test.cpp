@@ -168,7 +168,7 @@ TEST(Suites, EveryCaseNamesAKnownSourceAndLevel) {
 
 // The smooth-curve experiments hold what their names say: every cell (suite x level) has
 // its instance count, and every curve is closed with no corner (blob2.svg and complex.svg,
-// Béziers with tangent breaks, once sat here and made "smooth" suites measure corners).
+// once taken with their rounding kinks as corners, made "smooth" suites measure corners).
 TEST(Suites, SmoothCurveCellsHaveTheirCountOfSmoothClosedCurves) {
   for (const auto& [suffix, count] : {std::pair<std::string, std::size_t>{"", 30}, {"-full", 200}}) {
     std::set<std::string> curves;
@@ -193,10 +193,23 @@ TEST(Suites, SmoothCurveCellsHaveTheirCountOfSmoothClosedCurves) {
       }
     }
   }
-  EXPECT_FALSE(geometry::make_curve("svg:" + resolve_data_path("data/svg/blob2.svg").string())
+  EXPECT_FALSE(geometry::make_curve("svg:" + resolve_data_path("data/svg/blob2.svg").string() + ",corner=0")
                    .components.front()
                    .corners()
-                   .empty());  // the check above can fail
+                   .empty());  // the check above can fail: blob2 as written has kinks
+}
+
+// The survey samples its four closed Bézier outlines in its sampling and noise experiments
+// (survey: Sampling Density), and so do ours.
+TEST(Suites, SmoothCurveExperimentsSampleTheSurveysClosedOutlines) {
+  for (const char* experiment : {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "sampling-full"}) {
+    std::set<std::string> svg;
+    for (const Suite_case& c : suite_cases(*find_suite(experiment)))
+      if (input_source(c.input).starts_with("svg:")) svg.insert(std::string(input_source(c.input)));
+    EXPECT_EQ(svg, (std::set<std::string>{"svg:data/svg/blob2.svg", "svg:data/svg/complex.svg", "svg:data/svg/simple.svg",
+                                          "svg:data/svg/spiral.svg"}))
+        << experiment;
+  }
 }
 
 // Every cell of the main job that yields a rate rests on 30 instances or more; the runtime
