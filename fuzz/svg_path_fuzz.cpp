@@ -2,7 +2,9 @@
 // curve or an Svg_syntax_error (std::invalid_argument naming a position inside the text),
 // without a crash, undefined behaviour or any other exception; in particular the curve
 // model's own std::invalid_argument (pieces that do not join) would be a finding. What it
-// accepts must be a valid curve: regular pieces, finite lengths, finite polylines. The
+// accepts must be a valid curve: regular pieces, finite lengths, finite polylines, both as
+// written and with the joins that turn by less than a degree made smooth (the default of
+// SVG files), which must leave the same components, closed or open alike. The
 // transform-list parser gets the same bytes under the same rule.
 #include <algorithm>
 #include <cmath>
@@ -48,7 +50,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace curvebench;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    for (const auto& component : geometry::parse_svg_path(text).components) fuzz::check_component(component);
+    const geometry::Curve drawn = geometry::parse_svg_path(text);
+    const geometry::Curve smoothed = geometry::parse_svg_path(text, {}, geometry::default_svg_corner_degrees * M_PI / 180);
+    for (const auto& component : drawn.components) fuzz::check_component(component);
+    for (const auto& component : smoothed.components) fuzz::check_component(component);
+    FUZZ_CHECK(drawn.components.size() == smoothed.components.size(), "smoothing keeps the components");
+    for (std::size_t c = 0; c < drawn.components.size(); ++c)
+      FUZZ_CHECK(drawn.components[c].closed() == smoothed.components[c].closed(), "smoothing keeps closed components closed");
   } catch (const geometry::Svg_syntax_error& error) {
     FUZZ_CHECK(error.position() <= size, "an error points inside the text or at its end");
   }
