@@ -31,8 +31,9 @@ namespace curvebench::geometry {
 class Path_builder {
  public:
   // Joins whose unit tangent turns by less than `corner_angle` radians are made smooth (see
-  // above); 0 keeps every join as drawn.
-  explicit Path_builder(double corner_angle = 0) : corner_angle_(corner_angle) {}
+  // above); 0, the default, keeps every join as drawn.
+  Path_builder() = default;
+  explicit Path_builder(double corner_angle) : corner_angle_(corner_angle) {}
 
   void move_to(const Point& p);
   void line_to(const Point& p);
@@ -53,7 +54,7 @@ class Path_builder {
  private:
   void end_subpath(bool closed);
 
-  double corner_angle_;
+  double corner_angle_ = 0;
   Point start_ = CGAL::ORIGIN, current_ = CGAL::ORIGIN;
   std::vector<std::vector<Point>> segments_;  // of the current subpath: ends of a line, or cubic control points
   std::vector<Curve_component> components_;

@@ -104,6 +104,23 @@ double curvature_of(const Curve_piece& piece, double t) {
   return CGAL::determinant(d, dd) / (speed * speed * speed);
 }
 
+// Where sign x curvature peaks on [low, high] of a piece (golden-section search); a
+// one-sided maximum at an end of the piece is that end itself.
+double curvature_maximum(const Curve_piece& piece, double sign, double low, double high) {
+  constexpr double golden = 0.6180339887498949;
+  for (int step = 0; step < 60 && high - low > 1e-15; ++step) {
+    const double a = high - golden * (high - low), b = low + golden * (high - low);
+    if (sign * curvature_of(piece, a) < sign * curvature_of(piece, b))
+      low = a;
+    else
+      high = b;
+  }
+  double u = (low + high) / 2;
+  for (const double end : {0.0, 1.0})
+    if (std::abs(u - end) <= 1e-9 && sign * curvature_of(piece, end) >= sign * curvature_of(piece, u)) u = end;
+  return u;
+}
+
 // The ends of the medial axis' branches: the centres of curvature at the local maxima of
 // |curvature| (inside a piece, or at a join from either side) whose osculating disc holds
 // no point of the dense sample. Such a disc is the largest empty one touching the curve
@@ -112,7 +129,7 @@ double curvature_of(const Curve_piece& piece, double t) {
 // which changes fastest there): on f5.svg, where the curvature jumps 50-fold at a Bézier
 // join, they stopped 20 units (16 % of lfs) short of it and lfs read that much high.
 //
-// A maximum whose radius is below `resolution` is a point where the medial axis reaches
+// A maximum whose radius is below `resolution` (a length) is a point where the medial axis reaches
 // the curve: a Bézier end whose handle lies on it (Inkscape's "c 0,0", 250 of them in
 // data/svg/, mostly at the ends of open strokes), where the curvature is unbounded
 // (cubic_bezier.h). Those are sharp points, as corners are.
@@ -141,20 +158,7 @@ Branch_ends branch_ends(const Curve& curve, const std::vector<std::vector<double
         for (std::size_t j = 0; j < t.size(); ++j) {
           const auto value = [&](std::size_t k) { return sign * kappa[k]; };
           if (!(value(j) > 0) || (j > 0 && value(j - 1) > value(j)) || (j + 1 < t.size() && value(j + 1) > value(j))) continue;
-          // Golden-section search for the maximum between the neighbours; a one-sided
-          // maximum at an end of the piece is that end itself.
-          double low = t[j > 0 ? j - 1 : 0], high = t[j + 1 < t.size() ? j + 1 : j];
-          constexpr double golden = 0.6180339887498949;
-          for (int step = 0; step < 60 && high - low > 1e-15; ++step) {
-            const double a = high - golden * (high - low), b = low + golden * (high - low);
-            if (sign * curvature_of(piece, a) < sign * curvature_of(piece, b))
-              low = a;
-            else
-              high = b;
-          }
-          double u = (low + high) / 2;
-          for (const double end : {0.0, 1.0})
-            if (std::abs(u - end) <= 1e-9 && sign * curvature_of(piece, end) >= sign * curvature_of(piece, u)) u = end;
+          const double u = curvature_maximum(piece, sign, t[j > 0 ? j - 1 : 0], t[j + 1 < t.size() ? j + 1 : j]);
           const double k = curvature_of(piece, u);
           if (!(sign * k > 0)) continue;
           if (!(1 / std::abs(k) > resolution)) {
