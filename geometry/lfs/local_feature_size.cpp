@@ -130,8 +130,8 @@ double curvature_maximum(const Curve_piece& piece, double sign, double low, doub
 // join, they stopped 20 units (16 % of lfs) short of it and lfs read that much high.
 //
 // A maximum whose radius is below `resolution` (a length) is a point where the medial axis reaches
-// the curve: a Bézier end whose handle lies on it (Inkscape's "c 0,0", 250 of them in
-// data/svg/, mostly at the ends of open strokes), where the curvature is unbounded
+// the curve: a Bézier end whose handle lies on it (Inkscape's "c 0,0", 257 of them in
+// data/svg/, 251 at the ends of open strokes), where the curvature is unbounded
 // (cubic_bezier.h). Those are sharp points, as corners are.
 struct Branch_ends {
   std::vector<Point> centres;
