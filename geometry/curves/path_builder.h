@@ -5,7 +5,7 @@
 //
 // Corners. A drawing program writes a node meant to be smooth with its two handles
 // collinear, then rounds every coordinate (Inkscape: 6 digits), so the tangent turns there
-// by 1e-6 to 1e-5 rad (data/svg/). Taken as drawn, each such join is a sharp corner, where
+// by a little (data/svg/: 1e-9 to 1.7e-3 rad). Taken as drawn, each is a sharp corner, where
 // lfs is 0 and every sampling condition needs samples piling up. With a `corner_angle`, a
 // join whose tangent turns by less than it is made exactly G1 before the pieces are made:
 // the Bézier handle(s) that set the two tangents there are turned onto one line (the
