@@ -148,8 +148,7 @@ Curve make_curve(std::string_view spec) {
     if (file.empty()) fail("svg needs a file: svg:FILE[,corner=DEGREES]");
     const double corner =
         Parameters(kind, options.empty() ? options : options.substr(1), {"corner"}).get("corner", default_svg_corner_degrees);
-    if (!(corner >= 0 && corner <= 180)) fail("svg: corner=" + format_number(corner) + " is not in [0, 180] degrees");
-    return read_svg_curve(file, corner);
+    return read_svg_curve(file, corner);  // which checks the angle before reading the file
   }
   if (kind == "glyph") {
     const auto [font, character] = split_last(rest);
