@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,10 @@
 
 namespace curvebench::algorithms {
 
-std::span<const Algorithm> registry() {
-  static const std::vector<Algorithm> algorithms{
+namespace {
+
+std::vector<Algorithm> built_in_algorithms() {
+  return {
       alpha_shape_algorithm(),
       beta_skeleton_algorithm(),
       emst_algorithm(),
@@ -56,8 +59,57 @@ std::span<const Algorithm> registry() {
       discur_algorithm(),
       vicur_algorithm(),
   };
-  return algorithms;
 }
+
+struct Table {
+  std::vector<Algorithm> algorithms = built_in_algorithms();
+  const std::size_t built_in_count = algorithms.size();
+  bool read = false;  // registration is closed once anyone may hold a pointer into it
+};
+
+Table& table() {
+  static Table table;
+  return table;
+}
+
+bool valid_name(std::string_view name) {
+  return !name.empty() && !name.ends_with(outlier_filter_suffix) && std::ranges::all_of(name, [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+  });
+}
+
+}  // namespace
+
+std::span<const Algorithm> registry() {
+  Table& all = table();
+  all.read = true;
+  return all.algorithms;
+}
+
+std::span<const Algorithm> registered_algorithms() { return registry().subspan(table().built_in_count); }
+
+void register_algorithm(Algorithm algorithm) {
+  Table& all = table();
+  const std::string name(algorithm.name);
+  if (!valid_name(algorithm.name))
+    throw std::invalid_argument("register_algorithm(\"" + name +
+                                "\"): a name is lowercase letters, digits, '-', '_' and '.', and does not end in " +
+                                std::string(outlier_filter_suffix));
+  if (std::ranges::find(all.algorithms, algorithm.name, &Algorithm::name) != all.algorithms.end())
+    throw std::invalid_argument("register_algorithm(\"" + name + "\"): the name is taken");
+  if (!algorithm.reconstruct)
+    throw std::invalid_argument("register_algorithm(\"" + name + "\"): no reconstruct function");
+  for (const Parameter& parameter : algorithm.parameters)
+    if (!(parameter.minimum <= parameter.default_value && parameter.default_value <= parameter.maximum))
+      throw std::invalid_argument("register_algorithm(\"" + name + "\"): parameter " + std::string(parameter.name) +
+                                  "'s default is outside its range");
+  if (all.read)
+    throw std::logic_error("register_algorithm(\"" + name +
+                           "\"): the registry has been read already; register before main (Registration)");
+  all.algorithms.push_back(std::move(algorithm));
+}
+
+Registration::Registration(Algorithm algorithm) { register_algorithm(std::move(algorithm)); }
 
 const Algorithm* find_algorithm(std::string_view name) {
   const auto all = registry();
