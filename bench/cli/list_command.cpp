@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "algorithms/registry.h"
+#include "bench/runner/resources.h"
 #include "bench/runner/suite.h"
 #include "graphs/proximity_graph.h"
 
@@ -58,6 +59,11 @@ void run_list(const List_options& options) {
       list_algorithms();
     return;
   }
+  if (options.what == "data") {  // where the suites' data/... and the report's scripts are read
+    const std::filesystem::path root = bench::resource_root();
+    std::cout << "data: " << (root / "data").string() << "\nreport: " << (root / "bench/report").string() << '\n';
+    return;
+  }
   if (options.what == "suites") {
     std::size_t width = 0;
     for (const bench::Suite& suite : bench::suites()) width = std::max(width, suite.name.size() + 2);
@@ -87,9 +93,9 @@ void run_list(const List_options& options) {
 
 void add_list_command(CLI::App& app) {
   auto options = std::make_shared<List_options>();
-  CLI::App* command = app.add_subcommand("list", "List the reconstruction algorithms, the proximity graphs or the benchmark suites");
-  command->add_option("WHAT", options->what, "algorithms, graphs or suites")
-      ->check(CLI::IsMember({"algorithms", "graphs", "suites"}))
+  CLI::App* command = app.add_subcommand("list", "List the reconstruction algorithms, the proximity graphs, the benchmark suites, or where the bundled data is");
+  command->add_option("WHAT", options->what, "algorithms, graphs, suites or data")
+      ->check(CLI::IsMember({"algorithms", "graphs", "suites", "data"}))
       ->capture_default_str();
   command->add_flag("--names", options->names_only, "One name per line, for scripts");
   command->callback([options] { run_list(*options); });

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "bench/runner/resources.h"
 #include "certify/sampling_measure.h"
 #include "geometry/curves/curve_spec.h"
 #include "geometry/io/point_io.h"
@@ -132,8 +133,8 @@ std::string_view input_source(std::string_view name) { return name.substr(0, nam
 
 std::filesystem::path resolve_data_path(const std::filesystem::path& path) {
   if (path.is_absolute() || std::filesystem::exists(path)) return path;
-  const std::filesystem::path in_tree = std::filesystem::path(CURVEBENCH_SOURCE_DIR) / path;
-  return std::filesystem::exists(in_tree) ? in_tree : path;
+  const std::filesystem::path shipped = resource_root() / path;
+  return std::filesystem::exists(shipped) ? shipped : path;
 }
 
 std::vector<Bench_input> make_bench_inputs(std::span<const std::string> names) {

@@ -75,7 +75,7 @@ Polyline dense_polyline(const geometry::Local_feature_size& lfs);
 // The source of an input name: its part before the first '|'.
 std::string_view input_source(std::string_view name);
 
-// `path` as given if it exists, else below the source tree (where data/ is).
+// `path` as given if it exists, else below resource_root() (where data/ is).
 std::filesystem::path resolve_data_path(const std::filesystem::path& path);
 
 }  // namespace curvebench::bench

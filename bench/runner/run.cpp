@@ -25,6 +25,7 @@
 #include "bench/runner/bench_input.h"
 #include "bench/runner/evaluation.h"
 #include "bench/runner/process_pool.h"
+#include "bench/runner/resources.h"
 #include "bench/runner/results_table.h"
 #include "bench/runner/suite.h"
 #include "certify/theorems.h"
@@ -576,7 +577,7 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& text) {
 }
 
 bool make_report(const std::filesystem::path& dir) {
-  const std::string script = std::string(CURVEBENCH_SOURCE_DIR) + "/bench/report/make_report.py";
+  const std::string script = (resource_root() / "bench/report/make_report.py").string();
   const std::string python = "/usr/bin/python3";
   std::fflush(nullptr);
   const pid_t pid = fork();
