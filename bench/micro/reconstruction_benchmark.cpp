@@ -5,63 +5,27 @@
 // linearly, predicts over a minute (size_budget.h).
 //
 //   reconstruction_benchmark --benchmark_filter='/1000000$'   # the n = 10^6 row of each
-#include <chrono>
-#include <map>
-
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <benchmark/benchmark.h>
 
 #include "algorithms/registry.h"
-#include "bench/micro/size_budget.h"
-#include "geometry/curves/analytic_curves.h"
-#include "geometry/sampling/sampling.h"
+#include "bench/micro/curve_sample_benchmark.h"
 
 namespace {
 
 using namespace curvebench;
 using geometry::Point;
 
-const std::vector<Point>& curve_sample(std::size_t n) {
-  static std::map<std::size_t, std::vector<Point>> cache;
-  auto& points = cache[n];
-  if (points.empty()) {
-    const geometry::Local_feature_size lfs(geometry::random_fourier_curve(7));
-    points = geometry::uniform_sampling(lfs, n).points;
-  }
-  return points;
-}
-
-template <class Run>
-void run(benchmark::State& state, const std::string& name, Run reconstruct) {
-  static bench::Size_budget budget(std::chrono::seconds(60));
-  if (!budget.admits(state, name)) return;
-  const auto& points = curve_sample(static_cast<std::size_t>(state.range(0)));
-  const auto start = std::chrono::steady_clock::now();
-  for (auto _ : state) benchmark::DoNotOptimize(reconstruct(points));
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  budget.record(name, state.range(0), elapsed.count() / static_cast<double>(state.iterations()));
-  state.SetComplexityN(state.range(0));
-}
-
 void cgal_delaunay(benchmark::State& state) {
-  run(state, "cgal_delaunay_triangulation", [](const std::vector<Point>& points) {
+  bench::run_on_curve_sample(state, "cgal_delaunay_triangulation", [](const std::vector<Point>& points) {
     CGAL::Delaunay_triangulation_2<geometry::Kernel> dt(points.begin(), points.end());
     return dt.number_of_faces();
   });
 }
 
 void register_all() {
-  const auto sizes = [](benchmark::internal::Benchmark* b) {
-    b->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Complexity(benchmark::oNLogN)->Unit(benchmark::kMillisecond);
-  };
-  sizes(benchmark::RegisterBenchmark("cgal_delaunay_triangulation", cgal_delaunay));
-  // algorithm.reconstruct, not algorithms::reconstruct: the points are distinct already,
-  // so the duplicate merge would only add its own cost to every row.
-  for (const algorithms::Algorithm& algorithm : algorithms::registry())
-    sizes(benchmark::RegisterBenchmark(std::string(algorithm.name).c_str(), [&algorithm](benchmark::State& state) {
-      run(state, std::string(algorithm.name),
-          [&](const std::vector<Point>& points) { return algorithm.reconstruct(points, {}).edges.size(); });
-    }));
+  bench::growing_n(benchmark::RegisterBenchmark("cgal_delaunay_triangulation", cgal_delaunay));
+  for (const algorithms::Algorithm& algorithm : algorithms::registry()) bench::register_growing_n(algorithm);
 }
 
 }  // namespace
