@@ -19,6 +19,7 @@ test_packages=(
   clang-14 libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   python3-scipy
+  doxygen  # the API reference (`docs` target), which the ctest api_reference builds
   slurm-wlm munge  # tests/cli/curvebench_slurm_test.sh starts a one-node Slurm cluster of its own
 )
 case "${1:-test}" in

@@ -1,6 +1,7 @@
 #!/bin/sh
-# Doxygen's INPUT_FILTER for docs/api/Doxyfile.in: a header's plain "// " comments are its
-# documentation. A comment line becomes "/// ", and a comment after a declaration on the
-# same line ("int x;  // ...") becomes "///< ", which documents that member.
-exec sed -e 's|^\([[:space:]]*\)//\( \|$\)|\1///\2|' \
-         -e 's|\([;,{]\)\([[:space:]]*\)// |\1\2///< |' "$1"
+# Doxygen's FILTER_PATTERNS for headers (docs/api/Doxyfile.in): a header's plain "// "
+# comments are its documentation. A comment line becomes "/// ", and a comment after a
+# declaration on the same line ("int x;  // ...") becomes "///< ", which documents that
+# member. ('#' delimits the expressions, so that "\|" means "or".)
+exec sed -e 's#^\([[:space:]]*\)//\( \|$\)#\1///\2#' \
+         -e 's#\([;,{]\)\([[:space:]]*\)// #\1\2///< #' "$1"
