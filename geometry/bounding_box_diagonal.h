@@ -1,3 +1,4 @@
+// \file
 // The length of the diagonal of the axis-parallel bounding box of some points: the size
 // that relative tolerances are fractions of (the lfs floor and resolution, and the
 // survey's uniform noise, "Robustness to Noise": "delta is in terms of the bounding box
@@ -13,6 +14,8 @@
 
 namespace curvebench::geometry {
 
+// The diagonal of the axis-parallel bounding box of `points` (in their units); 0 for none
+// or one. Computed in double (a size, not a decision).
 inline double bounding_box_diagonal(std::span<const Point> points) {
   if (points.empty()) return 0;
   const auto box = CGAL::bounding_box(points.begin(), points.end());

@@ -1,3 +1,4 @@
+// \file
 // An edge of a reconstructed or ground-truth curve, as the pair of indices of its two
 // points. A plain pair (not a class) so that edge lists sort, compare and hash with the
 // standard library, and so that geometry/ need not know about Boost.Graph.
@@ -10,6 +11,7 @@
 
 namespace curvebench::geometry {
 
+// The indices of an edge's two points, into the point list it belongs with.
 using Edge = std::pair<std::size_t, std::size_t>;
 
 // The form every edge list takes when it leaves a builder or an algorithm, and in which

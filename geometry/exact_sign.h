@@ -1,3 +1,4 @@
+// \file
 // The exact sign of a polynomial in input coordinates: the tool for predicates CGAL
 // does not provide (beta-skeleton lunes, sums of distances, ...).
 //
@@ -36,22 +37,30 @@ namespace curvebench::geometry {
 // operands takes a microcode assist on x86 and made every predicate 20x slower.
 class Error_bounded_double {
  public:
+  // An exact value, such as an input coordinate: error 0. Implicit, so that a predicate's
+  // inputs enter its expressions as they are.
   Error_bounded_double(double exact) : value_(exact), error_(0) {}  // NOLINT: inputs are exact
 
   // A value known to lie within `error` of the exact one.
   static Error_bounded_double with_error(double value, double error) { return {value, error}; }
 
+  // The double computed.
   double value() const { return value_; }
+  // The bound on |value() - exact value|; may be infinite (after overflow).
   double error() const { return error_; }
 
+  // The rounded sum; the error bound adds those of a and b and the rounding of the sum.
   friend Error_bounded_double operator+(Error_bounded_double a, Error_bounded_double b) {
     const double v = a.value_ + b.value_;
     return {v, a.error_ + b.error_ + rounding(v)};
   }
+  // The rounded difference, bounded as the sum.
   friend Error_bounded_double operator-(Error_bounded_double a, Error_bounded_double b) {
     const double v = a.value_ - b.value_;
     return {v, a.error_ + b.error_ + rounding(v)};
   }
+  // The rounded product; the bound is |a| err(b) + |b| err(a) + err(a) err(b) plus the
+  // rounding of the product.
   friend Error_bounded_double operator*(Error_bounded_double a, Error_bounded_double b) {
     const double v = a.value_ * b.value_;
     return {v, std::abs(a.value_) * b.error_ + std::abs(b.value_) * a.error_ +
@@ -64,6 +73,7 @@ class Error_bounded_double {
     return std::isfinite(value_) && std::isfinite(error_) &&
            std::abs(value_) > error_ * (1 + 0x1p-40);
   }
+  // The sign of value(): that of the exact value if sign_is_certain().
   CGAL::Sign sign() const { return value_ > 0 ? CGAL::POSITIVE : value_ < 0 ? CGAL::NEGATIVE : CGAL::ZERO; }
 
  private:
@@ -76,12 +86,17 @@ class Error_bounded_double {
   double error_;
 };
 
+// A vector of the plane in a predicate's number type NT (Error_bounded_double, an interval
+// or Exact_number), for writing a polynomial once for every stage of exact_sign.
 template <class NT>
 struct Vector2 {
-  NT x, y;
+  // The x coordinate.
+  NT x, y;  // the y coordinate
+  // The componentwise sum.
   friend Vector2 operator+(const Vector2& a, const Vector2& b) { return {a.x + b.x, a.y + b.y}; }
 };
 
+// a - b in NT, from the exact input coordinates of a and b.
 template <class NT>
 Vector2<NT> difference(const Point& a, const Point& b) {
   return {NT(a.x()) - NT(b.x()), NT(a.y()) - NT(b.y())};
@@ -92,26 +107,33 @@ Vector2<NT> difference(const Point& a, const Point& b) {
 // coordinates are near 1, neither overflow nor underflow where the inputs are huge.
 template <class NT>
 NT scaled(double v, int e);
+// As a filter's number: v 2^-e with error 0, or the smallest subnormal if bits were lost.
 template <>
 inline Error_bounded_double scaled(double v, int e) {
   const double s = std::ldexp(v, -e);
   return Error_bounded_double::with_error(s, std::ldexp(s, e) == v ? 0.0 : 0x1p-1074);
 }
+// As an interval: the point v 2^-e, or an interval around it one smallest subnormal wide
+// on each side if bits were lost. Call with the FPU rounding upwards.
 template <>
 inline CGAL::Interval_nt_advanced scaled(double v, int e) {  // under upward rounding
   const double s = std::ldexp(v, -e);
   if (std::ldexp(s, e) == v) return s;
   return {-(0x1p-1074 - s), s + 0x1p-1074};
 }
+// a - b in NT, with every coordinate scaled by 2^-e first (see scaled).
 template <class NT>
 Vector2<NT> scaled_difference(const Point& a, const Point& b, int e) {
   return {scaled<NT>(a.x(), e) - scaled<NT>(b.x(), e), scaled<NT>(a.y(), e) - scaled<NT>(b.y(), e)};
 }
 
+// The dot product a.x b.x + a.y b.y.
 template <class NT>
 NT dot(const Vector2<NT>& a, const Vector2<NT>& b) { return a.x * b.x + a.y * b.y; }
+// The cross product a.x b.y - a.y b.x: positive if b is counterclockwise from a.
 template <class NT>
 NT cross(const Vector2<NT>& a, const Vector2<NT>& b) { return a.x * b.y - a.y * b.x; }
+// dot(a, a).
 template <class NT>
 NT squared_length(const Vector2<NT>& a) { return dot(a, a); }
 
@@ -144,6 +166,9 @@ CGAL::Sign exact_sign(const Error_bounded_double& approximation, const Polynomia
   return CGAL::sign(polynomial(std::type_identity<Exact_number>{}));
 }
 
+// The exact sign of `polynomial`, a callable that takes std::type_identity<NT> and
+// returns its value in NT (see the top of this file), evaluated first in
+// Error_bounded_double.
 template <class Polynomial>
 CGAL::Sign exact_sign(const Polynomial& polynomial) {
   return exact_sign(polynomial(std::type_identity<Error_bounded_double>{}), polynomial);
@@ -162,6 +187,8 @@ inline std::optional<CGAL::Sign> certain_sign_of_difference(double a, double b) 
   return gap > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
 }
 
+// (a.x - b.x)² + (a.y - b.y)² in double, rounded: the kind of value that
+// certain_sign_of_difference compares.
 inline double squared_distance_approximation(const Point& a, const Point& b) {
   const double dx = a.x() - b.x(), dy = a.y() - b.y();
   return dx * dx + dy * dy;

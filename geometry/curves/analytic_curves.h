@@ -1,3 +1,4 @@
+// \file
 // Smooth closed curves given by formulas: the survey's smooth curve C ("Definitions and
 // Notations": twice differentiable, so lfs > 0 and epsilon-samplings exist) in shapes
 // whose length, curvature and medial axis are known or easy to check, plus random smooth
@@ -30,10 +31,12 @@ Curve ellipse(double a, double b);
 // Curve_component::corners() reports. Name "superellipse:a=A,b=B,n=N".
 Curve superellipse(double a, double b, double exponent);
 
+// The random part of a random Fourier curve: how many harmonics perturb the unit circle,
+// and how strongly. Part of the curve's name, so a name makes the same curve again.
 struct Fourier_curve_parameters {
   int harmonics = 5;       // perturbing harmonics k = 2 .. harmonics + 1
   double amplitude = 0.4;  // coefficient of harmonic k drawn uniformly from [-1, 1) * amplitude / k^decay
-  double decay = 2;
+  double decay = 2;        // the exponent of k above: higher harmonics are weaker; >= 0
 };
 
 // (x, y)(θ) = (cos θ, sin θ) + Σ_k (A_k cos kθ + B_k sin kθ) with random vectors A_k, B_k:
@@ -46,6 +49,9 @@ struct Fourier_curve_parameters {
 // attempts all fail (amplitude far too large).
 Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& parameters = {});
 
+// The default `separation` of random_fourier_curves(), in the curves' units (the unit
+// circle that each component perturbs is 2 across).
+inline constexpr double component_gap = 1.5;
 // Several components for multi-curve experiments: random_fourier_curve(seed + c, parameters)
 // for c = 0 .. components - 1, in a row along x, `separation` apart beyond their bounding
 // boxes (the default, component_gap, is wide against every component's features, so each
@@ -54,7 +60,6 @@ Curve random_fourier_curve(std::uint64_t seed, const Fourier_curve_parameters& p
 // random_fourier_curve itself; otherwise the name ends in ",components=K" and, unless the
 // separation is the default, ",separation=D". Throws std::invalid_argument for components
 // outside [1, 64] or a separation that is not positive and finite.
-inline constexpr double component_gap = 1.5;
 Curve random_fourier_curves(std::uint64_t seed, const Fourier_curve_parameters& parameters, int components,
                             double separation = component_gap);
 
@@ -88,6 +93,8 @@ Curve random_spiral(std::uint64_t seed);
 // std::invalid_argument unless a and b are coprime, 1 <= a < b <= 5 (4:5 crosses 31 times),
 // or if 200 draws all fail.
 Curve lissajous_curve(int a, int b, std::uint64_t seed);
+// 2ab - a - b: how many times the Lissajous figure of coprime a < b crosses itself at a
+// generic phase, and so how many crossings lissajous_curve(a, b, seed) has.
 constexpr int lissajous_crossings(int a, int b) { return 2 * a * b - a - b; }
 
 }  // namespace curvebench::geometry

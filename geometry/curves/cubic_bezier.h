@@ -1,3 +1,4 @@
+// \file
 // The cubic Bézier piece: SVG paths and font outlines (cubic, and quadratic elevated to
 // cubic) are chains of them, and the survey's sampling tool ("Sampling Tools") and its
 // bunny data set work on cubic Bézier curves.
@@ -15,6 +16,8 @@
 
 namespace curvebench::geometry {
 
+// The cubic Bézier curve B(u) = Σ (3 choose i) (1-u)^(3-i) u^i p_i of four control points
+// as a Curve_piece, t in [0, 1] from p0 to p3.
 class Cubic_bezier final : public Curve_piece {
  public:
   // Requires that the control points are not all collinear (append_cubic_bezier() turns
@@ -24,9 +27,14 @@ class Cubic_bezier final : public Curve_piece {
   // derivative that grows like 1/√u towards it, as the curvature there is unbounded.
   explicit Cubic_bezier(const std::array<Point, 4>& control);
 
+  // The four control points as given to the constructor, p0 first.
   const std::array<Point, 4>& control_points() const { return control_; }
+  // B(t); with a degenerate end, B at the reparametrised value (see the constructor).
   Point point(double t) const override;
+  // B'(t); with a degenerate end, that of the reparametrised piece, non-zero at that end.
   Vector derivative(double t) const override;
+  // B''(t); with a degenerate end, that of the reparametrised piece, which grows like 1/√u
+  // towards that end and stays finite at the end itself.
   Vector second_derivative(double t) const override;
 
  private:

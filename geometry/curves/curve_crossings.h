@@ -1,3 +1,4 @@
+// \file
 // Where a curve crosses itself or another component: points of the medial axis' closure
 // (survey, "Definitions and Notations"), so lfs is 0 there, as at a sharp corner.
 //
@@ -15,8 +16,12 @@
 
 namespace curvebench::geometry {
 
+// A point where two branches of a curve meet: two places on one component, or one on each
+// of two components.
 struct Curve_crossing {
-  Point point;
+  Point point;  // the midpoint of the two branches' points at `first` and `second`
+  // Where each branch passes the crossing, a closed component's parameter in
+  // [0, piece_count()).
   Curve_location first, second;  // first.component <= second.component
 };
 

@@ -1,3 +1,4 @@
+// \file
 // The name a generated curve carries (Curve::name): the curve_spec.h string that makes the
 // same curve again, e.g. "ellipse:a=2,b=1". Numbers are written in their shortest form
 // that reads back to the same double, so a name is an exact recipe.
@@ -9,6 +10,8 @@
 
 namespace curvebench::geometry {
 
+// x in the shortest form that reads back to the same double (std::to_chars, independent
+// of the locale), e.g. "0.1", "2", "1e-05".
 inline std::string format_number(double x) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);

@@ -1,3 +1,4 @@
+// \file
 // Turns drawing commands (SVG path data, font outlines) into curve components, so that
 // every path-like source treats degenerate input alike: the pieces of a curve must be
 // regular and join (curve.h), while drawings contain zero-length segments, lone points,
@@ -33,11 +34,16 @@ class Path_builder {
   // Joins whose unit tangent turns by less than `corner_angle` radians are made smooth (see
   // above); 0, the default, keeps every join as drawn.
   Path_builder() = default;
+  // A builder that smooths the joins turning by less than `corner_angle` radians.
   explicit Path_builder(double corner_angle) : corner_angle_(corner_angle) {}
 
+  // Ends the current subpath open, if it has any segment, and starts one at p.
   void move_to(const Point& p);
+  // A line segment from the current point to p, which becomes the current point. Before
+  // the first move_to the current point is the origin.
   void line_to(const Point& p);
   void quadratic_to(const Point& control, const Point& p);  // elevated to a cubic
+  // A cubic Bézier from the current point with these inner control points, ending at p.
   void cubic_to(const Point& control1, const Point& control2, const Point& p);
   // Ends the subpath closed. If its end misses its start by at most `close_gap` of its size
   // (the diagonal of its control points' bounding box), the end is moved onto the start

@@ -1,3 +1,4 @@
+// \file
 // Curves drawn in SVG: the survey's benchmark data (stefango74/sampling2d, data/svg/) are
 // Inkscape drawings of cubic Bézier paths, from which the survey's sampling tool ("Sampling
 // Tools") draws epsilon-samplings with exact ground truth.
@@ -32,13 +33,17 @@
 
 namespace curvebench::geometry {
 
+// An affine map of the plane (CGAL), as an SVG `transform` attribute gives one; the
+// default-constructed one is the identity.
 using Affine_transformation = Kernel::Aff_transformation_2;
 
 // Malformed path data or transform list: the message starts "character N:" (0-based).
 class Svg_syntax_error : public std::invalid_argument {
  public:
+  // what() is "character POSITION: MESSAGE".
   Svg_syntax_error(std::size_t position, const std::string& message)
       : std::invalid_argument("character " + std::to_string(position) + ": " + message), position_(position) {}
+  // The 0-based index, in the path data or transform list, of the character at fault.
   std::size_t position() const noexcept { return position_; }
 
  private:
@@ -60,7 +65,7 @@ Affine_transformation parse_svg_transform(std::string_view list);
 // Joins of SVG drawings turning by less than this many degrees are smooth (see above).
 inline constexpr double default_svg_corner_degrees = 1;
 
-// Every <path d="..."> of an SVG file (those in <defs> included), in document order, each
+// Every `<path d="...">` of an SVG file (those in `<defs>` included), in document order, each
 // mapped by the `transform` attributes of the path and its ancestors; units and viewBox
 // are ignored (the curve is in user units); joins turning by less than `corner_degrees`
 // are made smooth. Named "svg:" + file, with ",corner=DEGREES" unless the default. Throws

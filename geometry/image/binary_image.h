@@ -1,3 +1,4 @@
+// \file
 // Binary images for the survey's discrete sampling tool (survey, "Sampling Tools": "a
 // discrete sampling tool ... for extracting points from a given binary white-on-black
 // image"): the image type, netpbm files, and rasterizing a Curve into an image, so that
@@ -29,11 +30,17 @@ namespace curvebench::geometry {
 // then fits comfortably in 64-bit integers, and a file cannot make us allocate gigabytes.
 inline constexpr std::size_t max_image_pixels = std::size_t{1} << 28;
 
+// A black-and-white image: object (foreground) pixels and background pixels.
+// Consistent when pixels.size() == width * height, which the writers check.
 struct Binary_image {
-  std::size_t width = 0, height = 0;
+  // The number of columns.
+  std::size_t width = 0, height = 0;  // the number of rows
   std::vector<std::uint8_t> pixels;  // row-major, row 0 at the top; 1 = object (foreground), 0 = background
 
+  // Whether pixel (x, y), column x and row y from the top, is object. Not checked: x <
+  // width, y < height.
   bool at(std::size_t x, std::size_t y) const { return pixels[y * width + x] != 0; }
+  // Same size and same pixel values.
   friend bool operator==(const Binary_image&, const Binary_image&) = default;
 };
 
@@ -46,12 +53,15 @@ struct Binary_image {
 // Whatever follows a raw raster is ignored (netpbm streams may hold further images).
 // Memory use is bounded by the size of the input, whatever the header claims.
 Binary_image read_netpbm(const std::filesystem::path& path);
+// The same from the bytes of a file in memory; `name` stands for the path in messages.
+// Safe on arbitrary bytes (fuzz/netpbm_fuzz.cpp).
 Binary_image parse_netpbm(std::string_view bytes, std::string_view name);
 
 // P5 with maxval 255: object 255 (white), background 0. Throws std::invalid_argument if
 // pixels.size() != width * height, and the path version std::filesystem::filesystem_error
 // if the file cannot be written.
 void write_pgm(const Binary_image& image, const std::filesystem::path& path);
+// The same to a stream, which must be in binary mode.
 void write_pgm(const Binary_image& image, std::ostream& out);
 
 // The affine map between image coordinates (u to the right, v downwards, in pixels; pixel
@@ -62,7 +72,9 @@ struct Raster_frame {
   double x_origin = 0;  // curve x of the image's left edge, u = 0
   double y_origin = 0;  // curve y of the image's top edge, v = 0
 
+  // The image coordinates (u, v) of curve point p.
   Point to_image(const Point& p) const { return {(p.x() - x_origin) * scale, (y_origin - p.y()) * scale}; }
+  // The curve point at image coordinates (u, v): the inverse of to_image, up to rounding.
   Point to_curve(double u, double v) const { return {x_origin + u / scale, y_origin - v / scale}; }
 };
 

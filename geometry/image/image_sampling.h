@@ -1,3 +1,4 @@
+// \file
 // The survey's discrete sampling tool (survey, "Sampling Tools": "It first extracts the
 // pixels lying on the object boundary by comparing each pixel with its 8-neighborhood.
 // Then ... randomly picks a pixel at position (x,y), inserts a point at the location
@@ -46,6 +47,8 @@ std::vector<std::vector<Pixel>> boundary_contours(const Binary_image& image);
 // an image of max_image_pixels). Throws std::invalid_argument unless radius > 0.
 std::uint64_t erasure_threshold(double radius);
 
+// What sample_image_boundary returns: the samples as a Sample with its ground truth, and
+// where they came from in the image.
 struct Image_sample {
   // Points at the centres of the sampled pixels: (x + 0.5, height - y - 0.5), i.e. image
   // coordinates with the y axis pointing up so the samples look like the image, or mapped

@@ -1,3 +1,4 @@
+// \file
 // Reading and writing point files: every point-set format found in the public data sets
 // curvebench uses, and one canonical format for writing.
 //
@@ -35,8 +36,9 @@
 
 namespace curvebench::geometry {
 
+// A point file as read: the points, any third column, and where each point stands.
 struct PointFile {
-  std::vector<Point> points;
+  std::vector<Point> points;  // in file order, duplicates kept (PointSet merges them)
   std::vector<double> values;      // the third column; empty if the file has two
   std::vector<std::size_t> lines;  // 1-based source line of each point, for messages
 };
@@ -54,6 +56,7 @@ PointFile parse_point_file(std::string_view text, std::string_view name);
 // (it could not be read back), and the path version std::filesystem::filesystem_error
 // if the file cannot be written.
 void write_points(const std::filesystem::path& path, std::span<const Point> points);
+// The same to a stream.
 void write_points(std::ostream& out, std::span<const Point> points);
 
 }  // namespace curvebench::geometry

@@ -1,3 +1,4 @@
+// \file
 // The lexical layer under curvebench's text formats (point files, edge lists, Triangle
 // .node): a text is a sequence of records, one per line that holds data, and each record
 // is a list of fields. The rules, shared by every format so they cannot drift apart:
@@ -25,14 +26,19 @@
 
 namespace curvebench::geometry {
 
+// Whether RecordReader::next accepts empty fields in a line (see above).
 enum class Empty_fields { rejected, allowed };
 
+// One line that holds data, split into fields. Views into the text being read, valid
+// while that text is.
 struct Record {
   std::size_t line = 0;                  // 1-based line number in the text
   std::string_view text;                 // first to last field of the line, for messages
   std::vector<std::string_view> fields;  // views into the text being read
 };
 
+// Reads a text record by record under the rules above, and turns fields into numbers with
+// error messages that name the file and line.
 class RecordReader {
  public:
   // `name` (usually the path) prefixes every error message; `text` must outlive the reader.
@@ -43,8 +49,10 @@ class RecordReader {
   // Empty_fields::allowed an empty field is an empty view instead of an error; a caller
   // that then finds the line is not what it allowed it for calls reject_empty_fields.
   bool next(Record& record, Empty_fields empty = Empty_fields::rejected);
+  // Throws ParseError if `record` has an empty field.
   void reject_empty_fields(const Record& record) const;
 
+  // Throws ParseError("NAME:LINE: MESSAGE"), for the caller's own checks of a record.
   [[noreturn]] void fail(std::size_t line, std::string_view message) const;
 
   // A finite double; rejects NaN, infinities, values out of the range of double
@@ -69,7 +77,7 @@ class RecordReader {
 // range of double and finite or not: a header line has no such field.
 bool is_number(std::string_view field);
 
-// `field` in single quotes, with control and non-ASCII bytes escaped as \xNN and long
+// `field` in single quotes, with control and non-ASCII bytes escaped as `\xNN` and long
 // fields cut, so that an error message stays one printable line whatever the input.
 std::string quoted(std::string_view field);
 

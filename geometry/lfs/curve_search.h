@@ -1,3 +1,4 @@
+// \file
 // The largest value of a function along a stretch of curve, as the sampling measures
 // (survey, "Definitions and Notations": epsilon is a supremum over the curve, the reach
 // of an interval an infimum) and the safe sampler need it. Evaluated on the
@@ -12,8 +13,9 @@
 
 namespace curvebench::geometry {
 
+// The largest value found by maximize_along, and where.
 struct Curve_maximum {
-  double value;
+  double value;  // the largest value of f found
   double parameter;  // where it is attained (may pass piece_count() on a closed component)
 };
 

@@ -1,3 +1,4 @@
+// \file
 // The local feature size (survey, "Definitions and Notations"): lfs(p) for a point p of
 // the curve is its distance to the nearest point of the medial axis. Every sampling
 // condition (epsilon, rho) and the lfs noise model are measured in it.
@@ -67,20 +68,26 @@
 
 namespace curvebench::geometry {
 
+// A point of the curve where lfs is 0 (see "Sharp points" above).
 struct Sharp_point {
+  // Why lfs is 0 there.
   enum class Kind {
     corner,               // Curve_component::corners()
     crossing,             // listed once for each branch through it
     unbounded_curvature,  // a Bézier end whose handle lies on it (see above)
   };
-  Point point;
-  Curve_location location;
-  Kind kind = Kind::corner;
+  Point point;              // where it is in the plane
+  Curve_location location;  // where it is on the curve (for a crossing: on one branch)
+  Kind kind = Kind::corner;  // which of the three it is
 };
 
+// The lfs estimate of one curve (see above): built once, in the constructor, then read
+// from any number of threads. Holds its own copy of the curve (the pieces are shared).
 class Local_feature_size {
  public:
+  // Dense points per lfs: chords are at most lfs / density (see the table above).
   static constexpr double default_density = 32;
+  // The shortest chord refinement makes, as a fraction of the bounding-box diagonal.
   static constexpr double default_resolution = 1e-5;
   // How far above the true lfs the estimate may read at the default density and
   // resolution: lfs (1 + stated_relative_error) + resolution x the bounding-box diagonal
@@ -91,6 +98,7 @@ class Local_feature_size {
   explicit Local_feature_size(const Curve& curve, double density = default_density,
                               double resolution = default_resolution);
 
+  // The curve whose lfs this is; component indices and parameters refer to it.
   const Curve& curve() const { return curve_; }
 
   // lfs of a curve point p (for another point: its distance to the medial axis). 0 at a
@@ -101,8 +109,13 @@ class Local_feature_size {
   // two dense parameters are kept once computed (safe from any number of threads).
   double at(std::size_t component, double s) const;
 
+  // The estimated medial axis that lfs is the distance to.
   const Medial_axis& medial_axis() const { return medial_axis_; }
+  // Corners, points of unbounded curvature and crossings (listed once per branch), where
+  // lfs is exactly 0.
   std::span<const Sharp_point> sharp_points() const { return sharp_points_; }
+  // The diagonal of the bounding box of the curve's initial sample (16 points per piece):
+  // the length that `resolution` and default_minimum_lfs are fractions of.
   double bounding_box_diagonal() const { return bounding_box_diagonal_; }
 
   // The dense sample's parameters of a component, increasing, in [0, piece_count()) if it

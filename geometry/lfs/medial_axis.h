@@ -1,3 +1,4 @@
+// \file
 // The medial axis of a curve (survey, "Definitions and Notations": the closure of the
 // points of the plane with two or more closest points on the curve), estimated as the
 // Voronoi vertices of a dense point sample of the curve, i.e. the circumcenters of its
@@ -30,16 +31,22 @@ namespace curvebench::geometry {
 
 // One component's run of the dense sample: its number of points, in order along it.
 struct Sample_chain {
-  std::size_t size = 0;
-  bool closed = false;
+  std::size_t size = 0;  // its number of points
+  bool closed = false;   // whether its last point neighbours its first
 };
 
+// The estimated medial axis as a set of points (see above), with a nearest-point index.
+// Holds its own copy of the points.
 class Medial_axis {
  public:
-  // `curve_sample` holds the chains one after another.
+  // `curve_sample` holds the chains one after another. `exact_points` are medial points
+  // known exactly (sharp points, branch ends), kept as they are. Throws
+  // std::invalid_argument if the chains' sizes do not add up to curve_sample.size().
   Medial_axis(std::span<const Point> curve_sample, std::span<const Sample_chain> chains,
               std::span<const Point> exact_points);
 
+  // The medial points: `exact_points` first, then the Voronoi vertices, then the points
+  // along Voronoi edges.
   std::span<const Point> points() const { return points_; }
 
   // Distance from p to the nearest medial point: lfs(p) for a curve point p. +infinity if

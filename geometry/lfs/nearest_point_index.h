@@ -1,3 +1,4 @@
+// \file
 // Distance from a query point to the nearest of a fixed set of points: the distance to the
 // sampled medial axis that is lfs, and to a point sampling that epsilon divides by lfs
 // (survey, "Definitions and Notations").
@@ -31,8 +32,11 @@
 
 namespace curvebench::geometry {
 
+// Exact nearest-point distances to a fixed point set (see above).
 class Nearest_point_index {
  public:
+  // Builds the tree on a copy of `points`; points with a NaN coordinate are left out.
+  // Throws std::length_error for 2^32 - 1 points or more.
   explicit Nearest_point_index(std::span<const Point> points);
 
   // +infinity if the set is empty.

@@ -1,3 +1,4 @@
+// \file
 // How far a reconstructed curve C' lies from the original C: the survey's "Evaluation
 // Criteria". Both curves are edge chains (points + edges). Each is sampled uniformly and
 // densely; every sample s of one curve is mapped to its closest point M(s) on the other
@@ -21,14 +22,17 @@
 namespace curvebench::geometry {
 
 // An edge chain: edges index points.
+// A view: the caller keeps the points and edges alive while it is used.
 struct Polyline_view {
-  std::span<const Point> points;
-  std::span<const Edge> edges;
+  std::span<const Point> points;  // the points that `edges` index
+  std::span<const Edge> edges;    // pairs of indices into `points`
 };
 
+// The two distances of the survey's "Evaluation Criteria" between an original and a
+// reconstruction, in the curves' units.
 struct Curve_distance {
-  double hausdorff = 0;
-  double rms = 0;
+  double hausdorff = 0;  // H_D: the largest distance to the closest point, both ways
+  double rms = 0;        // RMS_D: the arc-length root mean square of that distance, both ways
 };
 
 // 0 and 0 if neither curve has an edge; +infinity for both if only one has none. Throws
@@ -36,6 +40,7 @@ struct Curve_distance {
 // `spacing` > 0 (a length); the default used by the benchmark is 1e-3 of the bounding-box
 // diagonal of `original` (default_distance_spacing).
 Curve_distance curve_distance(const Polyline_view& original, const Polyline_view& reconstruction, double spacing);
+// 1e-3 of the bounding-box diagonal of `original`'s points, or 1 if that is 0 or infinite.
 double default_distance_spacing(const Polyline_view& original);
 
 // The diagonal of the bounding box of a polyline's points (0 for none): the unit in which

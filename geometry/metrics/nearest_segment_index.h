@@ -1,3 +1,4 @@
+// \file
 // The closest point of a set of segments (a polyline, a ground truth, a reconstruction) to
 // a query point: the closest-point mapping M : C -> C' of the survey's "Evaluation
 // Criteria". Metric values only (output), so evaluated in double.
@@ -19,6 +20,8 @@
 
 namespace curvebench::geometry {
 
+// The closest point on a fixed set of segments (see above). Holds its own copy of the
+// segments; queries only read it.
 class Nearest_segment_index {
  public:
   // Edges index `points`; an edge whose ends coincide counts as a point. Throws
@@ -26,12 +29,13 @@ class Nearest_segment_index {
   // double. A query farther than that gets an infinite squared distance.
   Nearest_segment_index(std::span<const Point> points, std::span<const Edge> edges);
 
+  // The answer to a query: which segment, and the point of it closest to the query.
   struct Nearest {
     std::size_t edge;         // index into the edges given
     double squared_distance;  // from the query to `closest`
-    Point closest;
+    Point closest;            // on segment `edge`, nearest to the query (rounded)
   };
-  // std::nullopt if there is no edge.
+  // The closest point over all segments; std::nullopt if there is no edge.
   std::optional<Nearest> nearest(const Point& query) const;
 
  private:

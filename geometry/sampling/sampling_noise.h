@@ -1,3 +1,4 @@
+// \file
 // Perturbations of a Sample, as in the survey's "Robustness to Noise" and "Outliers":
 // they move the curve points (or add outlier points) and keep the ground truth, the lfs
 // and the curve location of each point as they were. Seeded (Seeded_random): the same
