@@ -25,22 +25,23 @@ using geometry::Point;
 // its own points and the edges index those.
 struct Reconstruction {
   std::vector<Edge> edges;  // each (i, j) with i < j, sorted, no repeats
-  std::vector<Point> points;
+  std::vector<Point> points;  // the points the edges index; empty: the input points
 };
 
 // Table 1's yes / no, and "only" (the EMST reconstructs only open curves).
 enum class Support { no, yes, only };
 
+// An algorithm's row of the survey's Table 1: the input it handles, the output it gives.
 struct Capabilities {
   Support non_uniform = Support::no;  // input: non-uniform sampling
-  Support noise = Support::no;
-  Support outliers = Support::no;
+  Support noise = Support::no;        // input: noisy points
+  Support outliers = Support::no;     // input: outliers
   Support manifold = Support::no;     // output: a manifold curve
-  Support open = Support::no;
+  Support open = Support::no;         // output: open curves (curves with ends)
   Support multiple = Support::no;     // several components
   Support sharp = Support::no;        // sharp corners
   bool guarantee = false;              // a proven sampling condition
-  std::string_view time_complexity;
+  std::string_view time_complexity;    // as Table 1 states it: "O(n log n)"
 };
 
 // The condition under which a manifold curve is provably reconstructed exactly. The
@@ -70,15 +71,17 @@ Reconstruct edges_on_input(F f) {
   };
 }
 
+// One algorithm of the registry: its names, parameters, Table 1 row and sampling
+// condition, and the call that runs it.
 struct Algorithm {
   std::string_view name;       // as typed on the command line: "nn-crust"
   std::string_view title;      // as the survey writes it: "NN-Crust"
   std::string_view reference;  // authors and year of the paper
   std::string_view category;   // the survey's group in Table 1: "Feature Size Criteria"
-  std::vector<Parameter> parameters;
-  Capabilities capabilities;
-  Sampling_condition condition;
-  Reconstruct reconstruct;
+  std::vector<Parameter> parameters;  // what Parameter_values may set; empty: none
+  Capabilities capabilities;          // its row of Table 1
+  Sampling_condition condition;       // its proven sampling condition, if any
+  Reconstruct reconstruct;            // the bare call: registry.h's reconstruct() checks and merges first
   // False where the same input may give different output between runs: Optimal
   // Transport, whose CGAL implementation breaks cost ties by memory address.
   bool repeatable = true;

@@ -15,6 +15,7 @@ namespace curvebench::algorithms {
 
 // alpha unset: graphs::connecting_alpha of the points.
 std::vector<Edge> alpha_shape_reconstruction(std::span<const Point> points, std::optional<double> alpha);
+// The registry's entry "alpha-shape", with parameter alpha (0: graphs::connecting_alpha).
 Algorithm alpha_shape_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -12,7 +12,11 @@
 
 namespace curvebench::algorithms {
 
+// The lune-based beta-skeleton's edges, canonical (i < j, sorted). Throws
+// std::invalid_argument unless beta is finite and >= 0, and for equal points or a
+// non-finite coordinate.
 std::vector<Edge> beta_skeleton_reconstruction(std::span<const Point> points, double beta);
+// The registry's entry "beta-skeleton", with parameter beta (default 1.7, from 1 to 1e6).
 Algorithm beta_skeleton_algorithm();
 
 }  // namespace curvebench::algorithms

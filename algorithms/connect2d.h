@@ -66,6 +66,7 @@ namespace curvebench::algorithms {
 // The Connect2D polygon on distinct points, canonical (i < j, sorted, no repeats). Throws
 // std::invalid_argument for equal points or a non-finite coordinate.
 std::vector<Edge> connect2d_reconstruction(std::span<const Point> points);
+// The registry's entry "connect2d", without parameters.
 Algorithm connect2d_algorithm();
 
 }  // namespace curvebench::algorithms

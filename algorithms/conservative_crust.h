@@ -43,12 +43,14 @@
 
 namespace curvebench::algorithms {
 
+// The default rho: it keeps every edge of an epsilon-sampling with epsilon < 0.0625.
 inline constexpr double default_conservative_crust_rho = 0.25;
 
 // Canonical edges (i < j, sorted) of distinct points. Throws std::invalid_argument unless
 // 0 <= rho <= 1.
 std::vector<Edge> conservative_crust_reconstruction(std::span<const Point> points,
                                                     double rho = default_conservative_crust_rho);
+// The registry's entry "conservative-crust", with parameter rho (default 0.25, from 0 to 1).
 Algorithm conservative_crust_algorithm();
 
 }  // namespace curvebench::algorithms

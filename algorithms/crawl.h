@@ -50,6 +50,8 @@ enum class Crawl_closing {
 // The Crawl edges on distinct points, canonical (i < j, sorted, no repeats). Throws
 // std::invalid_argument for equal points or a non-finite coordinate.
 std::vector<Edge> crawl_reconstruction(std::span<const Point> points, Crawl_closing closing = Crawl_closing::authors);
+// The registry's entry "crawl", with parameter mutual_closing (0: Crawl_closing::authors,
+// 1: Crawl_closing::mutual).
 Algorithm crawl_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -60,6 +60,7 @@ namespace curvebench::algorithms {
 // The crust of distinct points, canonical edges (i < j, sorted). 0 or 1 point: no edge;
 // collinear points: the chain of consecutive points (no Voronoi vertex exists).
 std::vector<Edge> crust_reconstruction(std::span<const Point> points);
+// The registry's entry "crust", without parameters.
 Algorithm crust_algorithm();
 
 }  // namespace curvebench::algorithms

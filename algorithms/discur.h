@@ -47,7 +47,7 @@ struct Curve_growth_rules {
   // Continuation (VICUR only): a turn at a path end sharper than this angle (degrees,
   // 0..180; 180 turns the rule off) joins only if |pq| <= corner_ratio * the end edge.
   double turning_angle_degrees = 180;
-  double corner_ratio = 0;
+  double corner_ratio = 0;  // that factor; must be > 0 unless the angle is 180 (then unread)
 };
 
 // The paths and cycles grown by `rules` on distinct points, canonical (i < j, sorted, no
@@ -57,6 +57,7 @@ std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_
 
 // The DISCUR edges on distinct points: grow_curves with the default rules.
 std::vector<Edge> discur_reconstruction(std::span<const Point> points);
+// The registry's entry "discur", without parameters.
 Algorithm discur_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -10,7 +10,10 @@
 
 namespace curvebench::algorithms {
 
+// The EMST's edges, canonical (i < j, sorted). Throws std::invalid_argument for equal
+// points or a non-finite coordinate.
 std::vector<Edge> emst_reconstruction(std::span<const Point> points);
+// The registry's entry "emst", without parameters.
 Algorithm emst_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -74,6 +74,7 @@
 
 namespace curvebench::algorithms {
 
+// FitConnect's settings; the registry exposes each as a parameter of the same name.
 struct Fit_connect_options {
   int max_neighbors = 1024;  // the largest neighbourhood a point grows to (2 to 65536)
   double sharp_angle = 60;   // degrees: curve ends meeting within it form a sharp corner
@@ -85,14 +86,16 @@ struct Fit_connect_options {
 // The connectivity pass alone, on input indices: the representative points (increasing)
 // and the edges between them (canonical), at most two per point.
 struct Fitted_connectivity {
-  std::vector<std::uint32_t> representatives;
-  std::vector<Edge> edges;
+  std::vector<std::uint32_t> representatives;  // input indices, increasing
+  std::vector<Edge> edges;                     // between input indices, canonical
 };
 
 // Both throw std::invalid_argument for equal points, a non-finite coordinate or bad options.
 Fitted_connectivity fit_connect_connectivity(std::span<const Point> points, const Fit_connect_options& options = {});
 // `points` of the result: the representatives (blended), in input order; edges index them.
 Reconstruction fit_connect_reconstruction(std::span<const Point> points, const Fit_connect_options& options = {});
+// The registry's entry "fit-connect", with parameters max_neighbors, sharp_angle, smoothing
+// and blend (Fit_connect_options).
 Algorithm fit_connect_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -63,9 +63,14 @@ namespace gathan_rules {
 // The line of an estimated normal at p (G1): towards the circumcentre of (p, a, b) for
 // `pole`; `none` accepts every direction.
 struct Normal_line {
+  // pole: the line runs towards the circumcentre of (p, a, b); none: no estimate (p lies in
+  // no Delaunay triangle, as on collinear input), every direction passes.
   enum class Kind : std::uint8_t { none, pole };
-  Kind kind = Kind::none;
-  Point p, a, b;
+  Kind kind = Kind::none;  // none unless a pole was found
+  // The point the line passes through.
+  Point p, a, b;  // with p and a, the triangle whose circumcentre is the pole (pole only)
+  // \var a
+  // With p and b, the triangle whose circumcentre is the pole (pole only).
 };
 
 // A direction vector of the normal line, as a polynomial in the coordinates.
@@ -88,7 +93,8 @@ CGAL::Sign compare_circumradii(const Point& p, const Point& a1, const Point& b1,
 
 // A Delaunay edge pq with the apexes of its two triangles, when they exist.
 struct Edge_with_apexes {
-  Point p, q;
+  // The edge's first end; `left` and `right` are seen from p towards q.
+  Point p, q;  // the edge's second end
   const Point* left = nullptr;   // apex left of p -> q
   const Point* right = nullptr;  // apex right of p -> q
 };
@@ -112,6 +118,7 @@ bool angle_at_least(const Point& c, const Point& a, const Point& x, double cos_a
 
 // theta_degrees in (0, 90): G2's largest angle between dual Voronoi edge and normal.
 std::vector<Edge> gathan_reconstruction(std::span<const Point> points, double theta_degrees);
+// The registry's entry "gathan", with parameter theta (degrees, default 30, from 1 to 89).
 Algorithm gathan_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -64,6 +64,8 @@ namespace curvebench::algorithms {
 
 // alpha_degrees in (0, 180): the minimum opening angle of the sharp corners.
 std::vector<Edge> gathang_reconstruction(std::span<const Point> points, double alpha_degrees);
+// The registry's entry "gathang", with parameter corner_angle (alpha_degrees: default 30,
+// from 1 to 179).
 Algorithm gathang_algorithm();
 
 }  // namespace curvebench::algorithms

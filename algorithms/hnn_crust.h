@@ -23,6 +23,7 @@ namespace curvebench::algorithms {
 
 // Canonical edges (i < j, sorted); every point has at most two.
 std::vector<Edge> hnn_crust_reconstruction(std::span<const Point> points);
+// The registry's entry "hnn-crust", without parameters.
 Algorithm hnn_crust_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -50,6 +50,7 @@ namespace curvebench::algorithms {
 // Throws std::invalid_argument for equal points, a non-finite coordinate or a parameter
 // out of range.
 std::vector<Edge> lenz_reconstruction(std::span<const Point> points, double alpha_degrees = 40, std::size_t k = 8);
+// The registry's entry "lenz", with parameters alpha (alpha_degrees) and k.
 Algorithm lenz_algorithm();
 
 }  // namespace curvebench::algorithms

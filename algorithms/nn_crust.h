@@ -34,8 +34,10 @@ enum class Half_plane {
   beyond_bisector // HNN-Crust: |ps| < |qs|, the side of pq's bisector that holds p
 };
 
+// The index that stands for no neighbour.
 inline constexpr std::uint32_t no_neighbor = std::numeric_limits<std::uint32_t>::max();
 
+// The two neighbours of one point, as indices into the points.
 struct Nearest_and_half_neighbor {
   std::uint32_t nearest = no_neighbor;  // none only for a lone point
   std::uint32_t half = no_neighbor;     // none if the half-plane holds no point
@@ -51,6 +53,7 @@ std::vector<Nearest_and_half_neighbor> nearest_and_half_neighbors(std::span<cons
 // The NN-Crust edges: {p, nearest(p)} and {p, half(p)} for every p (behind_p), canonical
 // (i < j, sorted, no repeats).
 std::vector<Edge> nn_crust_reconstruction(std::span<const Point> points);
+// The registry's entry "nn-crust", without parameters.
 Algorithm nn_crust_algorithm();
 
 }  // namespace curvebench::algorithms

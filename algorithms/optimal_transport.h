@@ -24,6 +24,8 @@
 
 namespace curvebench::algorithms {
 
+// When the simplification stops, and how much it relocates; the registry exposes each as a
+// parameter of the same name.
 struct Optimal_transport_options {
   // Stop at this many output vertices; 0: stop when the transport cost reaches `tolerance`.
   std::size_t vertices = 0;
@@ -37,6 +39,8 @@ struct Optimal_transport_options {
 // the edges between them, canonical. Throws std::invalid_argument for a non-finite coordinate.
 Reconstruction optimal_transport_reconstruction(std::span<const Point> points,
                                                 const Optimal_transport_options& options = {});
+// The registry's entry "optimal-transport", with parameters vertices, tolerance and
+// relocation; marked not repeatable.
 Algorithm optimal_transport_algorithm();
 
 }  // namespace curvebench::algorithms

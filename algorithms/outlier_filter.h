@@ -29,9 +29,10 @@
 
 namespace curvebench::algorithms {
 
+// The filter's two parameters (outlier_neighbors and outlier_factor in the registry).
 struct Outlier_filter_options {
   std::size_t neighbors = 4;  // k
-  double factor = 3;
+  double factor = 3;          // p is an outlier iff r(p) > factor * R
 };
 
 // Indices of the points kept, increasing. Points must be distinct and finite (throws

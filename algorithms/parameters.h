@@ -10,12 +10,15 @@
 
 namespace curvebench::algorithms {
 
+// What values a parameter takes: any real number in its range, or only whole ones.
 enum class Parameter_type { real, integer };
 
+// One parameter of an algorithm, as Algorithm::parameters lists it.
 struct Parameter {
-  std::string_view name;
-  Parameter_type type = Parameter_type::real;
-  double default_value = 0;
+  std::string_view name;                        // the key of name=value: "beta"
+  Parameter_type type = Parameter_type::real;   // integer: a value must be whole
+  double default_value = 0;                     // the value when none is set
+  // The smallest valid value; the largest is `maximum`.
   double minimum = 0, maximum = 0;  // closed range of valid values
   std::string_view meaning;          // one line, for `curvebench list`
 };
@@ -24,9 +27,12 @@ struct Parameter {
 class Parameter_values {
  public:
   Parameter_values() = default;
+  // Values by name, e.g. {{"beta", 1.7}}; checked only by check().
   Parameter_values(std::initializer_list<std::pair<const std::string, double>> values) : values_(values) {}
 
+  // Sets or replaces the value of `name`; checked only by check().
   void set(std::string name, double value) { values_[std::move(name)] = value; }
+  // Whether a value is set for `name` (a default does not count).
   bool has(std::string_view name) const { return values_.find(name) != values_.end(); }
   // The value of `parameter`, or its default.
   double operator[](const Parameter& parameter) const;
@@ -40,6 +46,7 @@ class Parameter_values {
   // Parses "name=value,name=value" (empty: no value); throws std::invalid_argument.
   static Parameter_values parse(std::string_view text);
 
+  // The values set, by name (defaults not included).
   const std::map<std::string, double, std::less<>>& values() const { return values_; }
 
  private:

@@ -73,7 +73,9 @@ struct Peel_stages {
 // Distinct points (throws std::invalid_argument for equal points or a non-finite
 // coordinate); `reach` >= 0. Fewer than two points give no edge.
 Peel_stages peel_stages(std::span<const Point> points, double reach);
+// The final edges, peel_stages(points, reach).result.
 std::vector<Edge> peel_reconstruction(std::span<const Point> points, double reach);
+// The registry's entry "peel", with parameter reach (default 0: off; from 0 to 10).
 Algorithm peel_algorithm();
 
 }  // namespace curvebench::algorithms

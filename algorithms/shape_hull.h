@@ -57,6 +57,7 @@ namespace curvebench::algorithms {
 // The shape hull's edges on distinct points, canonical (i < j, sorted, no repeats). Throws
 // std::invalid_argument for equal points or a non-finite coordinate.
 std::vector<Edge> shape_hull_reconstruction(std::span<const Point> points);
+// The registry's entry "shape-hull", without parameters.
 Algorithm shape_hull_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -50,6 +50,7 @@ namespace curvebench::algorithms {
 // subset of the Delaunay triangulation with every valence <= 2. Throws
 // std::invalid_argument for equal points or a non-finite coordinate.
 std::vector<Edge> sig_connect2d_reconstruction(std::span<const Point> points);
+// The registry's entry "sig-connect2d", without parameters.
 Algorithm sig_connect2d_algorithm();
 
 }  // namespace curvebench::algorithms

@@ -59,6 +59,7 @@
 
 namespace curvebench::algorithms {
 
+// StretchDenoise's settings; the registry exposes each as a parameter of the same name.
 struct Stretch_denoise_options {
   int window = 3;             // chain neighbours on each side in a normal / noise fit
   double cutoff_scale = 1.0;  // cut-off = this * estimated noise extent ...
@@ -70,6 +71,8 @@ struct Stretch_denoise_options {
   int max_neighbors = 1024;   // the connectivity pass's largest neighbourhood
 };
 
+// The output of stretch_denoise, with what each output point was allowed and where it came
+// from.
 struct Stretch_denoise_result {
   Reconstruction reconstruction;  // the representative points, denoised, and FitConnect's edges
   std::vector<double> cutoff;     // per output point: how far it was allowed to move
@@ -79,8 +82,10 @@ struct Stretch_denoise_result {
 // Exact duplicates are merged first. Throws std::invalid_argument on a non-finite
 // coordinate.
 Stretch_denoise_result stretch_denoise(std::span<const Point> points, const Stretch_denoise_options& options = {});
+// stretch_denoise(points, options).reconstruction.
 Reconstruction stretch_denoise_reconstruction(std::span<const Point> points,
                                               const Stretch_denoise_options& options = {});
+// The registry's entry "stretch-denoise", with the parameters of Stretch_denoise_options.
 Algorithm stretch_denoise_algorithm();
 
 }  // namespace curvebench::algorithms

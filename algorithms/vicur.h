@@ -25,9 +25,13 @@
 
 namespace curvebench::algorithms {
 
+// The default proximity_ratio, here and in the registry: DISCUR's fixed 2.
 inline constexpr double default_vicur_proximity_ratio = 2;
+// The default turning_angle, in degrees.
 inline constexpr double default_vicur_turning_angle = 90;
+// The default corner_ratio.
 inline constexpr double default_vicur_corner_ratio = 1.5;
+// The default closing_rank: a path closes if its ends are among each other's 2 nearest.
 inline constexpr int default_vicur_closing_rank = 2;
 
 // The VICUR edges on distinct points, canonical (i < j, sorted, no repeats). Throws
@@ -38,6 +42,8 @@ std::vector<Edge> vicur_reconstruction(std::span<const Point> points,
                                        double turning_angle = default_vicur_turning_angle,
                                        double corner_ratio = default_vicur_corner_ratio,
                                        int closing_rank = default_vicur_closing_rank);
+// The registry's entry "vicur", with parameters proximity_ratio, turning_angle, corner_ratio
+// and closing_rank.
 Algorithm vicur_algorithm();
 
 }  // namespace curvebench::algorithms

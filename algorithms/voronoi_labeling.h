@@ -73,6 +73,7 @@ namespace curvebench::algorithms {
 // The Voronoi-labelling edges on distinct points, canonical (i < j, sorted, no repeats).
 // Throws std::invalid_argument for equal points or a non-finite coordinate.
 std::vector<Edge> voronoi_labeling_reconstruction(std::span<const Point> points);
+// The registry's entry "voronoi-labeling", without parameters.
 Algorithm voronoi_labeling_algorithm();
 
 }  // namespace curvebench::algorithms

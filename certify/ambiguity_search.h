@@ -49,7 +49,7 @@ namespace curvebench::certify {
 using geometry::Edge;
 using geometry::Point;
 
-// ---- the closed interpolating spline -------------------------------------------------
+//---- the closed interpolating spline -------------------------------------------------
 
 // The centripetal knot intervals sqrt(|q_i q_{i+1}|) of the closed polygon q_0 .. q_{n-1}
 // (they keep a cubic spline free of cusps and loops inside a span better than chord length).
@@ -68,8 +68,10 @@ std::vector<std::array<Point, 4>> closed_spline_controls(std::span<const Point> 
 geometry::Curve closed_spline_curve(std::span<const Point> points, std::span<const double> knot_intervals,
                                     std::string name = "spline");
 
-// ---- an ambiguous case ----------------------------------------------------------------
+//---- an ambiguous case ----------------------------------------------------------------
 
+// A candidate: the point set S and, for each of the two curves, its order of S, its knot
+// factors and its via points. Curve k (0 or 1) is C1 or C2.
 struct Ambiguity_case {
   std::vector<Point> points;                       // S
   std::array<std::vector<std::size_t>, 2> orders;  // the cyclic order of S along C1, C2
@@ -85,16 +87,18 @@ struct Ambiguity_case {
 // The points curve k interpolates in order (S in its order, each via point after its
 // sample), its knot intervals, its curve and its polygon's edges (canonical_edges form).
 std::vector<Point> ordered_points(const Ambiguity_case& c, int k);
-std::vector<double> knot_intervals(const Ambiguity_case& c, int k);
-std::vector<std::array<Point, 4>> curve_controls(const Ambiguity_case& c, int k);
-geometry::Curve ambiguity_curve(const Ambiguity_case& c, int k);
-std::vector<Edge> order_edges(std::span<const std::size_t> order);
+std::vector<double> knot_intervals(const Ambiguity_case& c, int k);  // centripetal, times the knot factors
+std::vector<std::array<Point, 4>> curve_controls(const Ambiguity_case& c, int k);  // Bézier controls per segment
+geometry::Curve ambiguity_curve(const Ambiguity_case& c, int k);  // named "spline C1" or "spline C2"
+std::vector<Edge> order_edges(std::span<const std::size_t> order);  // the closed polygon of a cyclic order
 
+// A case measured: whether it counts, and each curve's epsilon with where it is attained.
 struct Ambiguity_measure {
   bool valid = false;  // both curves smooth and simple, the two polygons differ
-  std::array<double, 2> epsilon{};
+  std::array<double, 2> epsilon{};                  // epsilon(S, C1), epsilon(S, C2); read only if valid
   std::array<geometry::Curve_location, 2> where{};  // where each epsilon is attained
   std::array<Point, 2> worst_point{};               // and that curve point
+  // The larger of the two epsilons; infinity unless valid.
   double max_epsilon() const { return valid ? std::max(epsilon[0], epsilon[1]) : INFINITY; }
 };
 
@@ -105,12 +109,13 @@ struct Ambiguity_measure {
 Ambiguity_measure measure_ambiguity(const Ambiguity_case& c,
                                     double density = geometry::Local_feature_size::default_density);
 
-// ---- the search -----------------------------------------------------------------------
+//---- the search -----------------------------------------------------------------------
 
+// How search_ambiguity searches: how many starts, how far each climbs, which cases.
 struct Ambiguity_search_options {
   std::size_t count = 6;          // independent starts
   std::size_t points = 0;         // |S| per start; 0: drawn from 6 .. 16 for each start
-  std::uint64_t seed = 0;
+  std::uint64_t seed = 0;         // of every random choice (each start has its own stream)
   std::size_t evaluations = 1500;  // hill-climbing steps per start (two lfs builds each)
   double search_density = 8;      // lfs density while searching (error ~3e-3, 6x faster)
   // How close two points of S may come, relative to the start's mean polygon edge. At 0
@@ -130,10 +135,11 @@ struct Ambiguity_search_options {
   bool mirror = false;
 };
 
+// The best case over all starts, and what the search did to find it.
 struct Ambiguity_search_result {
-  Ambiguity_case best;
+  Ambiguity_case best;        // the case of least max epsilon at the default lfs density
   Ambiguity_measure measure;  // of `best`, re-measured at the default lfs density
-  std::size_t best_start = 0;
+  std::size_t best_start = 0;  // the start it came from, 0-based
   std::vector<double> start_results;  // each start's final max epsilon (default density)
   std::size_t evaluations = 0;        // measure_ambiguity calls in all
 };
@@ -141,10 +147,20 @@ struct Ambiguity_search_result {
 // Deterministic: the same options give the same result, bit for bit, on one machine.
 Ambiguity_search_result search_ambiguity(const Ambiguity_search_options& options);
 
-// ---- output ---------------------------------------------------------------------------
+//---- output ---------------------------------------------------------------------------
 
+// The paths write_ambiguity_case wrote, all in its directory.
 struct Ambiguity_files {
-  std::filesystem::path points, edges[2], curves[2], picture, summary, replay;
+  // points.xy: S.
+  std::filesystem::path points, edges[2], curves[2], picture, summary, replay;  // replay.sh
+  // \var edges
+  // edges_1.edges and edges_2.edges: the polygons of C1 and C2.
+  // \var curves
+  // curve_1.svg and curve_2.svg: C1 and C2 as SVG cubic paths.
+  // \var picture
+  // picture.svg: S, C1 and C2.
+  // \var summary
+  // summary.json.
 };
 
 // Writes the case into `directory` (created if needed): points.xy, edges_1.edges,

@@ -21,6 +21,7 @@ using geometry::Curve_location;
 using geometry::Edge;
 using geometry::Point;
 
+// A sampling's epsilon and where it is attained.
 struct Epsilon_measure {
   double epsilon = 0;     // sup over the curve of distance to the nearest point / lfs
   Curve_location where;   // the curve point where it is attained
@@ -32,6 +33,7 @@ struct Epsilon_measure {
 Epsilon_measure measure_epsilon(const geometry::Local_feature_size& lfs, std::span<const Point> points,
                                 double minimum_lfs);
 
+// A sampling's rho (HNN-Crust's) and where it is attained.
 struct Rho_measure {
   double rho = 0;        // max over ground-truth edges of (|edge| / 2) / reach(interval)
   Edge edge{0, 0};       // the edge where it is attained
@@ -44,6 +46,7 @@ struct Rho_measure {
 // along the curve to j's (Sample's orientation).
 Rho_measure measure_rho(const geometry::Local_feature_size& lfs, const geometry::Sample& sample, double minimum_lfs);
 
+// A sampling's local uniformity and where it is attained.
 struct Uniformity_measure {
   double uniformity = 1;  // max over points of degree 2 of longer / shorter incident edge
   std::size_t point = 0;  // where it is attained
@@ -53,10 +56,11 @@ struct Uniformity_measure {
 // length 0, 1 if no point has two edges.
 Uniformity_measure measure_uniformity(std::span<const Point> points, std::span<const Edge> edges);
 
+// The three measures of one sample (measure_sampling).
 struct Sampling_measure {
-  Epsilon_measure epsilon;
-  Rho_measure rho;
-  Uniformity_measure uniformity;
+  Epsilon_measure epsilon;        // over all the sample's points
+  Rho_measure rho;                // over its ground-truth edges
+  Uniformity_measure uniformity;  // over its ground-truth edges
 };
 
 // All three, epsilon over all the sample's points, with the sample's own lfs floor.

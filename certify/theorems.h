@@ -13,11 +13,13 @@ namespace curvebench::certify {
 
 // What a theorem bounds: epsilon (Amenta and Bern's sampling) or rho (HNN-Crust's).
 enum class Measure { epsilon, rho };
+// "epsilon" or "rho".
 std::string_view measure_name(Measure measure);
 
+// One algorithm's sampling condition as a hypothesis to check.
 struct Theorem {
-  const algorithms::Algorithm* algorithm = nullptr;
-  Measure measure = Measure::epsilon;
+  const algorithms::Algorithm* algorithm = nullptr;  // not owned: it must outlive the theorem
+  Measure measure = Measure::epsilon;                // what `bound` limits
   double bound = 0;  // the hypothesis: the measured epsilon (or rho) < bound
   std::optional<double> uniformity_below = {};  // and, if set, local uniformity u < this
   bool covers_open_curves = false;  // stated for curves with ends too, not only closed ones
@@ -35,6 +37,7 @@ std::optional<Theorem> theorem_of(const algorithms::Algorithm& algorithm, Measur
 // to this relative margin, with room.
 inline constexpr double epsilon_relative_error = 1e-3;
 
+// The outcome of one case under a theorem (classify).
 enum class Verdict {
   passed,                // hypothesis verified, reconstructed exactly
   failure,               // hypothesis verified, not reconstructed exactly: a bug or a counterexample
@@ -42,6 +45,7 @@ enum class Verdict {
   hypothesis_violation,  // the measured epsilon is not below the bound: the sampler missed
 };
 
+// "passed", "failure", "inconclusive" or "hypothesis_violation".
 std::string_view verdict_name(Verdict verdict);
 
 // The verdict on one case: its measured epsilon (infinite near an unsampled sharp point),

@@ -36,14 +36,16 @@
 
 namespace curvebench::certify {
 
+// What search_tightness searches, and for how long.
 struct Tightness_options {
-  Measure measure = Measure::epsilon;
+  Measure measure = Measure::epsilon;  // the theorem on epsilon or the one on rho
   double seconds = 60;      // search time (a curve under way is finished)
-  std::uint64_t seed = 0;
+  std::uint64_t seed = 0;   // of the curves and the moves
   std::size_t max_curves = 0;  // stop after this many curves; 0: search for `seconds`
   std::size_t moves = 60;      // step 3's tries per failing curve
 };
 
+// A case the search built: a curve and a sampling of it, with the algorithm's output.
 struct Tightness_case {
   std::string curve;               // the curve spec (geometry/curves/curve_spec.h)
   geometry::Sample sample = {};    // on the curve, with its ground truth
@@ -51,17 +53,22 @@ struct Tightness_case {
   double level = 0;                // the sampler level that step 1 found
   std::vector<geometry::Edge> reconstruction = {};  // the algorithm's edges (not the ground truth)
   std::string error = {};          // or the algorithm's error, if it threw
+  // Samples added in step 2.
   std::size_t added = 0, moved = 0;  // samples added in step 2, moves kept in step 3
 };
 
+// What search_tightness found.
 struct Tightness_result {
-  Theorem theorem;
+  Theorem theorem;  // the theorem searched
   std::optional<Tightness_case> best = {};  // the failing case of smallest measure
-  std::size_t curves = 0, failing_curves = 0, evaluations = 0;
+  // Curves searched.
+  std::size_t curves = 0, failing_curves = 0, evaluations = 0;  // samplings measured in all
   // The largest measure of a sampler level that met the hypotheses and passed: where no
   // failure is found, the search saw none up to here.
   double largest_passed = 0;
-  double seconds = 0;
+  double seconds = 0;  // the search's running time
+  // \var failing_curves
+  // Curves on which some sampler level failed.
 };
 
 // Throws std::invalid_argument if `algorithm` has no bound on options.measure.
@@ -70,10 +77,12 @@ Tightness_result search_tightness(const algorithms::Algorithm& algorithm, const 
 // Whether `algorithm` reconstructs `sample` exactly (its own points, its ground truth), and
 // its edges or error: what the search and its tests decide a case by.
 struct Reconstruction_check {
-  bool exact = false;
-  std::vector<geometry::Edge> edges;
-  std::string error;
+  bool exact = false;                  // the edges are the ground truth's, on the sample's own points
+  std::vector<geometry::Edge> edges;   // the algorithm's edges, canonical; empty if it threw
+  std::string error;                   // what it threw, if it did
 };
+// Runs `algorithm` on sample.points through algorithms::reconstruct. An exception it
+// throws is caught and returned in `error`, so this does not throw.
 Reconstruction_check check_reconstruction(const algorithms::Algorithm& algorithm, const geometry::Sample& sample);
 
 }  // namespace curvebench::certify

@@ -23,6 +23,8 @@ namespace curvebench::graphs {
 
 // Throws std::invalid_argument unless alpha is finite and >= 0, or if points repeat.
 Graph alpha_shape_boundary(std::span<const Point> points, double alpha);
+// The same on a triangulation built beforehand. Throws std::invalid_argument unless alpha
+// is finite and >= 0.
 Graph alpha_shape_boundary(const Delaunay_triangulation& dt, double alpha);
 
 }  // namespace curvebench::graphs

@@ -24,6 +24,8 @@ namespace curvebench::graphs {
 // Throws std::invalid_argument unless beta is finite and >= 0.
 Graph beta_skeleton(const Delaunay_triangulation& dt, double beta, Beta_region region);
 
+// The same, triangulating `points` first (which also throws std::invalid_argument for
+// equal points or a non-finite coordinate).
 inline Graph beta_skeleton(std::span<const Point> points, double beta, Beta_region region) {
   return beta_skeleton(Delaunay_triangulation(points), beta, region);
 }

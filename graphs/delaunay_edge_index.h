@@ -14,10 +14,14 @@
 
 namespace curvebench::graphs {
 
+// The index of one triangulation's edges by their end points. It keeps no reference to the
+// triangulation.
 class Delaunay_edge_index {
  public:
+  // A position in dt.edges().
   using Edge_id = std::uint32_t;
 
+  // Indexes every edge of `dt`, sorting each vertex's incident edges by neighbour.
   explicit Delaunay_edge_index(const Delaunay_triangulation& dt) : first_(dt.size() + 1, 0) {
     const auto edges = dt.edges();
     for (const Delaunay_edge& e : edges) ++first_[e.source + 1], ++first_[e.target + 1];

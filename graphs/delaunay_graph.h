@@ -8,7 +8,10 @@
 
 namespace curvebench::graphs {
 
+// Every edge of `dt` as a Graph on its points. O(n) after the triangulation.
 Graph delaunay_graph(const Delaunay_triangulation& dt);
+// The same, triangulating `points` first (throws std::invalid_argument for equal points or
+// a non-finite coordinate).
 inline Graph delaunay_graph(std::span<const Point> points) { return delaunay_graph(Delaunay_triangulation(points)); }
 
 }  // namespace curvebench::graphs

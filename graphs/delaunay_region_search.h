@@ -15,8 +15,11 @@
 
 namespace curvebench::graphs {
 
+// A reusable search on one triangulation: each query resets its marks by a new stamp, not
+// by clearing them. Keeps a reference to the triangulation; one object per thread.
 class Delaunay_region_search {
  public:
+  // `dt` must outlive the search, which holds one mark per vertex.
   explicit Delaunay_region_search(const Delaunay_triangulation& dt) : dt_(dt), mark_(dt.size(), 0) {}
 
   // Calls visit(v) for each vertex v != start reached from `start` through vertices with

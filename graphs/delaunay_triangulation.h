@@ -18,11 +18,16 @@
 namespace curvebench::graphs {
 
 using geometry::Point;
+// A point's index in the input span: the triangulation's name for a vertex.
 using Vertex = std::uint32_t;
+// No vertex: the missing apex of a hull edge, or the nearest neighbour of a lone point.
 inline constexpr Vertex no_vertex = std::numeric_limits<Vertex>::max();
 
+// A finite edge of the triangulation with the apexes of the triangles on its two sides.
 struct Delaunay_edge {
+  // The end with the smaller index.
   Vertex source, target;  // source < target
+  // The apex of the triangle left of source -> target, or no_vertex (a hull edge, collinear input).
   Vertex left, right;     // apex of the triangle left / right of source -> target, or no_vertex
 };
 
@@ -31,20 +36,26 @@ struct Delaunay_edge {
 // took 15 s), so triangulations check first and sort instead.
 bool all_collinear(std::span<const Point> points);
 
+// The triangulation of a span of points. It keeps the span, not a copy: the points must
+// outlive it. Nothing changes after construction, so threads may share one.
 class Delaunay_triangulation {
  public:
   // Throws std::invalid_argument if two points are equal (merge them first, see
   // geometry::PointSet) or a coordinate is not finite.
   explicit Delaunay_triangulation(std::span<const Point> points);
 
+  // The input points, as given (the span, not a copy).
   std::span<const Point> points() const { return points_; }
+  // The number of points, i.e. of vertices.
   std::size_t size() const { return points_.size(); }
+  // Point v of the input.
   const Point& point(Vertex v) const { return points_[v]; }
 
   // Every finite edge once, in an order fixed by the input (not sorted: builders sort
   // what they output, and sorting 3n edges here would cost a third of the triangulation).
   std::span<const Delaunay_edge> edges() const { return edges_; }
 
+  // The Delaunay neighbours of v, in the order of their edges in edges() (not sorted).
   std::span<const Vertex> neighbors(Vertex v) const {
     return {neighbors_.data() + first_neighbor_[v], neighbors_.data() + first_neighbor_[v + 1]};
   }

@@ -13,7 +13,11 @@
 
 namespace curvebench::graphs {
 
+// The EMST of dt's points: n - 1 edges (none for no point). O(n log n) after the
+// triangulation.
 Graph euclidean_minimum_spanning_tree(const Delaunay_triangulation& dt);
+// The same, triangulating `points` first (throws std::invalid_argument for equal points or
+// a non-finite coordinate).
 inline Graph euclidean_minimum_spanning_tree(std::span<const Point> points) {
   return euclidean_minimum_spanning_tree(Delaunay_triangulation(points));
 }

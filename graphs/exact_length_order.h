@@ -15,9 +15,11 @@
 
 namespace curvebench::graphs {
 
+// An edge with the sort key that sort_by_exact_length reads first.
 struct Edge_with_length {
   double squared_length;  // rounded: settles almost every comparison without GMP
-  Vertex source, target;
+  // The end points, as in the Delaunay_edge it was made from (source < target).
+  Vertex source, target;  // the other end point
 };
 
 // The edges (source, target) of `points` with their rounded squared lengths.

@@ -19,6 +19,8 @@ namespace curvebench::graphs {
 using geometry::Edge;
 using geometry::Point;
 
+// An undirected Boost adjacency list: vertex i is point i, and each edge's edge_weight_t
+// its squared length rounded to double.
 using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
                                     boost::property<boost::edge_weight_t, double>, boost::no_property,
                                     boost::vecS>;

@@ -17,7 +17,11 @@ namespace curvebench::graphs {
 // Each point's k nearest other points (all of them if there are fewer), nearest first.
 std::vector<std::vector<Vertex>> k_nearest_neighbors(const Delaunay_triangulation& dt, std::size_t k);
 
+// The k-nearest-neighbour graph of dt's points (the symmetric one: an edge if either end
+// ranks the other). k = 0 gives no edge.
 Graph k_nearest_neighbor_graph(const Delaunay_triangulation& dt, std::size_t k);
+// The same, triangulating `points` first (throws std::invalid_argument for equal points or
+// a non-finite coordinate).
 inline Graph k_nearest_neighbor_graph(std::span<const Point> points, std::size_t k) {
   return k_nearest_neighbor_graph(Delaunay_triangulation(points), k);
 }

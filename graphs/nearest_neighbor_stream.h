@@ -15,6 +15,8 @@
 
 namespace curvebench::graphs {
 
+// The other points of one centre, nearest first, produced on demand. Keeps a pointer to
+// the triangulation.
 class Nearest_neighbor_stream {
  public:
   // `dt` must outlive the stream.

@@ -11,19 +11,25 @@
 
 namespace curvebench::graphs {
 
+// The parameters of the builders that take one; each builder reads only its own.
 struct Proximity_graph_parameters {
   double beta = 1.5;           // beta-lune, beta-circle
   std::size_t k = 2;           // knn
   std::optional<double> alpha;  // alpha (squared radius); default: connecting_alpha(dt)
 };
 
+// A row of the table: one builder and how it is named.
 struct Proximity_graph {
   std::string_view name;         // as typed on the command line
   std::string_view description;  // one line for --help
+  // Builds the graph on the triangulation's points; reads only its own parameters.
   Graph (*build)(const Delaunay_triangulation&, const Proximity_graph_parameters&);
 };
 
+// Every builder, in a fixed order: delaunay, emst, rng, gabriel, beta-lune, beta-circle,
+// sig, sigdt, knn, alpha. The table is static.
 std::span<const Proximity_graph> proximity_graphs();
+// The row named `name` in proximity_graphs(), or nullptr if there is none.
 const Proximity_graph* find_proximity_graph(std::string_view name);
 
 // The smallest alpha whose alpha-complex contains the EMST, so it is connected:

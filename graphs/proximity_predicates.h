@@ -25,6 +25,7 @@ inline CGAL::Sign compare_lengths(const Point& a, const Point& b, double ab2, co
   });
 }
 
+// The same, rounding the two squared lengths first.
 inline CGAL::Sign compare_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
   using geometry::squared_distance_approximation;
   return compare_lengths(a, b, squared_distance_approximation(a, b), c, d, squared_distance_approximation(c, d));
@@ -34,6 +35,7 @@ inline CGAL::Sign compare_lengths(const Point& a, const Point& b, const Point& c
 inline CGAL::Sign compare_distances(const Point& p, const Point& a, const Point& b) {
   return compare_lengths(p, a, p, b);
 }
+// The same, given both squared distances rounded (geometry::squared_distance_approximation).
 inline CGAL::Sign compare_distances(const Point& p, const Point& a, double pa2, const Point& b, double pb2) {
   return compare_lengths(p, a, pa2, p, b, pb2);
 }

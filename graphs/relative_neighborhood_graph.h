@@ -7,9 +7,12 @@
 
 namespace curvebench::graphs {
 
+// The relative neighbourhood graph of dt's points: the lune-based beta-skeleton at beta = 2.
 inline Graph relative_neighborhood_graph(const Delaunay_triangulation& dt) {
   return beta_skeleton(dt, 2, Beta_region::lune);
 }
+// The same, triangulating `points` first (throws std::invalid_argument for equal points or
+// a non-finite coordinate).
 inline Graph relative_neighborhood_graph(std::span<const Point> points) {
   return relative_neighborhood_graph(Delaunay_triangulation(points));
 }

@@ -15,7 +15,10 @@
 
 namespace curvebench::graphs {
 
+// SIGDT of dt's points. O(n) after the triangulation.
 Graph sphere_of_influence_delaunay_graph(const Delaunay_triangulation& dt);
+// The same, triangulating `points` first (throws std::invalid_argument for equal points or
+// a non-finite coordinate).
 inline Graph sphere_of_influence_delaunay_graph(std::span<const Point> points) {
   return sphere_of_influence_delaunay_graph(Delaunay_triangulation(points));
 }

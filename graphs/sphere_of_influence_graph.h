@@ -14,7 +14,10 @@
 
 namespace curvebench::graphs {
 
+// The sphere-of-influence graph of dt's points, searched through `dt`.
 Graph sphere_of_influence_graph(const Delaunay_triangulation& dt);
+// The same, triangulating `points` first (throws std::invalid_argument for equal points or
+// a non-finite coordinate).
 inline Graph sphere_of_influence_graph(std::span<const Point> points) {
   return sphere_of_influence_graph(Delaunay_triangulation(points));
 }

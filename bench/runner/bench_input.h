@@ -48,20 +48,24 @@ using geometry::Point;
 // The original curve as a dense polyline (within 1e-4 of its bounding-box diagonal): what
 // distances are measured against.
 struct Polyline {
-  std::vector<Point> points;
-  std::vector<Edge> edges;
+  std::vector<Point> points;  // its vertices
+  std::vector<Edge> edges;    // between `points`
+  // Both as a view, valid while this Polyline lives unchanged.
   geometry::Polyline_view view() const { return {points, edges}; }
 };
 
+// One input, made from its name: its points and, for a curve, what they are measured against.
 struct Bench_input {
-  std::string name;
-  std::vector<Point> points;
+  std::string name;          // the name it was made from
+  std::vector<Point> points;  // the points an algorithm gets, perturbations applied
   std::optional<std::vector<Edge>> truth;  // canonical, over `points`; none for a point file
   std::shared_ptr<const Polyline> curve;   // null for a point file
   // The sampling's measured epsilon and rho (certify/sampling_measure.h, true lfs, no
   // floor: infinite near a sharp point) and its local uniformity over the ground truth,
   // for a curve sample without noise or outliers.
-  std::optional<double> epsilon = {}, rho = {}, uniformity = {};
+  std::optional<double> epsilon = {}, rho = {}, uniformity = {};  // local uniformity (see epsilon)
+  // \var rho
+  // The measured rho (see epsilon).
 };
 
 // Inputs named `names`, all of one source (the part before the first '|'), which is read

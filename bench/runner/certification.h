@@ -33,31 +33,44 @@
 
 namespace curvebench::bench {
 
+// What `curvebench certify` runs: which curves, how many cases, at which level, and where.
 struct Certify_options {
   // fourier (random smooth closed curves), multi (2 or 3 of them side by side), nested (one
   // inside another), rounded (star polygons with every corner rounded), open (curves with
   // ends), mixed (those the theorem is stated for, in turn), svg (the bundled drawings), glyphs
   std::string curves = "fourier";
-  std::size_t count = 100;
+  std::size_t count = 100;         // cases (svg, glyphs: at most this many)
   certify::Measure measure = certify::Measure::epsilon;  // which theorem: on epsilon or on rho
   std::optional<double> level;     // sample at this epsilon (rho), else at below_bound x the bound
-  double below_bound = 0.95;
-  std::uint64_t seed = 0;
+  double below_bound = 0.95;       // the level as a share of the bound, when `level` is unset
+  std::uint64_t seed = 0;          // the generated curves' seeds start at SEED*2^32
   Run_options run;                 // output directory, workers, shard, resume, time limit
 };
 
+// A failure, shrunk and written to a directory of its own.
 struct Counterexample {
   std::string input;  // the shrunk input's name: it makes the sampling again
-  std::size_t points = 0;
+  std::size_t points = 0;  // the shrunk input's number of points
   double measured = 0;  // its epsilon (rho)
   std::filesystem::path directory;  // points.xy, truth.edges, the run's picture, replay.sh
 };
 
+// What a certification found: its cases counted by certify::Verdict.
 struct Certify_summary {
-  std::string algorithm;
-  certify::Measure measure = certify::Measure::epsilon;
-  double bound = 0, requested_level = 0;
+  std::string algorithm;  // the algorithm's name
+  certify::Measure measure = certify::Measure::epsilon;  // the theorem's measure
+  // The theorem's bound.
+  double bound = 0, requested_level = 0;  // the level the cases were sampled at
+  // Cases run: the sum of the four counts.
   std::size_t cases = 0, passed = 0, failures = 0, inconclusive = 0, hypothesis_violations = 0;
+  // \var passed
+  // Cases with the hypothesis verified and reconstructed exactly.
+  // \var failures
+  // Cases with the hypothesis verified and not reconstructed exactly.
+  // \var inconclusive
+  // Cases whose measure is within its error of the bound.
+  // \var hypothesis_violations
+  // Cases whose measure is not below the bound: the sampler missed it.
   std::vector<Counterexample> counterexamples = {};  // the first five failures, shrunk
 };
 

@@ -10,12 +10,14 @@
 
 namespace curvebench::bench {
 
+// How one reconstruction compares with the original (evaluate).
 struct Evaluation {
   std::optional<bool> exact;               // edge set == ground truth; none without one
+  // Hausdorff distance to the original, in the input's units; none without one.
   std::optional<double> hausdorff, rms;    // to the original; none without one
   std::optional<double> diagonal;          // of the original's bounding box (results.csv's unit)
   std::optional<double> normal_deviation;  // degrees
-  geometry::Curve_topology topology;
+  geometry::Curve_topology topology;       // manifoldness and components of the reconstruction
 };
 
 // `reconstruction`'s and `truth`'s edges are canonical. `on_input_points`: the

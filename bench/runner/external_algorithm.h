@@ -35,9 +35,11 @@
 
 namespace curvebench::bench {
 
+// The program's output is missing or malformed (status `invalid-output`).
 struct Invalid_output : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// The program was killed by a signal (status `crashed`).
 struct Program_crashed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -46,31 +48,39 @@ struct Program_timed_out : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The prefix of an algorithm name that is a command: exec:COMMAND.
 inline constexpr std::string_view external_prefix = "exec:";
 
 // A parameter of a program, substituted into its command as {NAME}: its value, or the
 // default, as the shortest decimal (an integer parameter as an integer).
 struct External_parameter {
-  std::string name;
-  bool integer = false;
-  double default_value = 0, minimum = 0, maximum = 0;
-  std::string meaning = {};
+  std::string name;      // NAME of its {NAME} placeholder and of name=value
+  bool integer = false;  // values must be whole, and are substituted as integers
+  // The value when none is set.
+  double default_value = 0, minimum = 0, maximum = 0;  // the largest valid value
+  // \var minimum
+  // The smallest valid value.
+  std::string meaning = {};  // one line, for `curvebench list`
 };
 
 // What makes a program an algorithm. `exec:COMMAND` declares only `name` (= the whole
 // text) and `command`; a file of named algorithms (algorithm_file.h) can say the rest.
 struct External_declaration {
-  std::string name;
+  std::string name;        // the name commands find it by; for exec:, the whole text
   std::string title = {};  // default: the name
   std::string command;     // a /bin/sh command line with {points}, {edges}, optionally {points_out} and {PARAMETER}s
+  // How {points} is written: xy ("x y" lines) or csv.
   enum class Point_format { xy, csv } input_format = Point_format::xy;  // csv: an `x,y` header, then `x,y` lines
   int index_base = 0;  // the program numbers points from 0 (C, Python) or 1 (MATLAB, Julia, R)
-  std::vector<External_parameter> parameters = {};
+  std::vector<External_parameter> parameters = {};  // each substituted as {NAME}
   std::optional<double> timeout_seconds = {};  // per run of the program, besides the run's own --timeout
   bool repeatable = true;                      // false: the same input may give different output
   // The claimed sampling condition, which `certify` and `hunt` check like a theorem's.
   std::string condition = "none declared";
-  std::optional<double> epsilon_below = {}, rho_below = {}, uniformity_below = {};
+  // The claimed bound on epsilon, as algorithms::Sampling_condition states one.
+  std::optional<double> epsilon_below = {}, rho_below = {}, uniformity_below = {};  // on local uniformity
+  // \var rho_below
+  // The claimed bound on rho.
   std::filesystem::path file = {};  // the file that declared it (absolute), if one did
 };
 
@@ -100,11 +110,12 @@ std::string shell_quoted(std::string_view text);
 // --algorithm-file that declares it, if one does; shell-quoted.
 std::string replay_arguments(const algorithms::Algorithm& algorithm);
 
+// The cut, in seconds, of a start-up run (below) of a program without a declared timeout.
+inline constexpr double startup_timeout_seconds = 10;
 // The program's wall time on an input of no points, in milliseconds: the median of three
 // runs, whatever each ends with (a program may refuse an empty input, yet it started), each
 // cut at its timeout or startup_timeout_seconds. What a run reports beside the program's
 // runtime, so that an interpreter's start-up is seen as such. 0 for a built-in algorithm.
-inline constexpr double startup_timeout_seconds = 10;
 double startup_milliseconds(const algorithms::Algorithm& algorithm);
 
 }  // namespace curvebench::bench

@@ -42,29 +42,32 @@
 
 namespace curvebench::bench {
 
+// What `curvebench hunt` searches, for how long, and where it writes what it finds.
 struct Hunt_options {
   std::string algorithm = {};    // a registered name or exec:COMMAND
   double seconds = 60;           // search time; shrinking a finding may run on, to 2 seconds + 30 in all
-  std::uint64_t seed = 0;
+  std::uint64_t seed = 0;        // of the generated cases
   std::filesystem::path output = {};  // findings' directories; empty: none written
   double case_timeout = 10;      // seconds per run of the algorithm
   std::size_t max_findings = 1;  // per defect kind
   std::size_t stop_after = 0;    // stop the search after this many findings; 0: search for `seconds`
 };
 
+// A defect found, shrunk.
 struct Hunt_finding {
   std::string kind;     // crash, hang, invalid-output, not-...
   std::string message;  // what was seen
   std::vector<geometry::Point> points;  // the shrunk input
-  std::size_t shrink_steps = 0;
+  std::size_t shrink_steps = 0;         // shrinks taken that kept the defect
   std::filesystem::path directory;      // where it was written, if it was
   std::string curve = {};               // the sampling's input name (bench_input.h), if it is one
   std::optional<double> epsilon = {};   // its measured epsilon
 };
 
+// What a hunt tried and found.
 struct Hunt_summary {
   std::size_t cases = 0;  // inputs tried, shrinking not counted
-  std::vector<Hunt_finding> findings;
+  std::vector<Hunt_finding> findings;  // in the order found, at most max_findings per kind
 };
 
 // Throws std::invalid_argument for an unknown algorithm or a bad exec: declaration.

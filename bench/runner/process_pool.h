@@ -15,13 +15,17 @@
 
 namespace curvebench::bench {
 
+// How one task ended.
 struct Task_outcome {
+  // finished: it returned; crashed: its child died, exited non-zero or sent nothing;
+  // timed_out: it was killed at the time limit.
   enum class Kind { finished, crashed, timed_out };
-  Kind kind = Kind::finished;
+  Kind kind = Kind::finished;  // how it ended
   std::string output;  // what the task returned (finished), else empty
   std::string reason;  // crashed / timed out: "killed by signal 11 (Segmentation fault)", ...
 };
 
+// How many children run at once, and the limits of each.
 struct Process_pool_options {
   std::size_t workers = 1;      // children at once
   double timeout_seconds = 0;   // per task; 0: none

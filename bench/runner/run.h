@@ -30,27 +30,38 @@ namespace curvebench::bench {
 // some: per algorithm and suite, the first `failure_pictures` jobs that are not exact and
 // those of its first `success_pictures` jobs that are.
 enum class Pictures { some, all, failures, none };
-inline constexpr std::size_t failure_pictures = 6, success_pictures = 2;
+// Pictures::some: how many jobs that are not exact get a picture, per algorithm and suite.
+inline constexpr std::size_t failure_pictures = 6, success_pictures = 2;  // of the first this many, the exact ones
 
+// What `curvebench run` runs, and how.
 struct Run_options {
-  std::string suite;
-  std::filesystem::path output;
+  std::string suite;            // a suite's name (suite.h)
+  std::filesystem::path output;  // the run directory, DIR
   std::vector<std::string> algorithms = {};  // registry names; empty: all
   std::size_t jobs = 0;                 // worker processes; 0: one per core
+  // The shard this run does, from 1 to `shards`.
   std::size_t shard = 1, shards = 1;    // run shard `shard` of `shards` (1-based)
-  bool resume = false;
+  bool resume = false;                  // run only the jobs missing from DIR/results.csv
   // Per job; 0: none. A minute: every algorithm but Optimal Transport (quadratic in
   // CGAL, 13 s at n = 10^4) takes seconds at the runtime suite's n = 10^5.
   double timeout_seconds = 60;
-  Pictures pictures = Pictures::some;
-  bool report = true;
-  bool progress = true;
+  Pictures pictures = Pictures::some;  // which jobs get a picture
+  bool report = true;                  // write the report at the end (make_report)
+  bool progress = true;                // show progress on stderr
 };
 
+// What a run did, counted by job status.
 struct Run_summary {
   std::size_t jobs = 0;     // in this shard
   std::size_t resumed = 0;  // found done in results.csv
+  // Jobs that ended with status `ok`.
   std::size_t ok = 0, failed = 0, invalid_output = 0, crashed = 0, timed_out = 0;  // of those run now
+  // \var failed
+  // Jobs whose algorithm, or the making of their input, threw: status `failed`.
+  // \var invalid_output
+  // Jobs with invalid output: status `invalid-output`.
+  // \var crashed
+  // Jobs whose program or worker process crashed: status `crashed`.
 };
 
 // Throws std::invalid_argument for an unknown suite or algorithm, bad shard numbers, or an

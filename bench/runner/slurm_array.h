@@ -15,7 +15,14 @@ namespace curvebench::bench {
 
 // The environment variables as given (unset: nullopt).
 struct Slurm_array_task {
+  // SLURM_ARRAY_TASK_ID.
   std::optional<std::string> id = std::nullopt, min = std::nullopt, max = std::nullopt, count = std::nullopt;
+  // \var min
+  // SLURM_ARRAY_TASK_MIN.
+  // \var max
+  // SLURM_ARRAY_TASK_MAX.
+  // \var count
+  // SLURM_ARRAY_TASK_COUNT.
 };
 
 // Reads SLURM_ARRAY_TASK_ID, _MIN, _MAX and _COUNT from this process's environment.

@@ -13,8 +13,9 @@
 
 namespace curvebench::bench {
 
+// One experiment: input-name templates and the variable whose levels fill them in.
 struct Suite {
-  std::string_view name;
+  std::string_view name;                      // as `curvebench run` takes it
   std::string_view description;               // what it measures, and the survey's section
   // The "= {}" let the table below leave out what a suite does not use, under -Wextra.
   std::vector<std::string_view> inputs = {};  // input-name templates; a source glyph:* stands for every glyph
@@ -24,6 +25,7 @@ struct Suite {
   std::vector<std::string_view> parts = {};   // a composite suite: the suites it runs, nothing else
 };
 
+// Every suite, in a fixed order (a static table).
 std::span<const Suite> suites();
 const Suite* find_suite(std::string_view name);  // nullptr if none has that name
 
