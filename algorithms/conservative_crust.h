@@ -10,8 +10,8 @@
 // isolated; the ends of an open curve keep their edges, so open curves give paths, unless
 // the edge between the two ends is on the convex hull (a gap in a convex stretch), whose
 // dual Voronoi edge is a ray, or has a large empty circle through both ends: then the gap
-// closes at any density. Certifying the open family shows it (README, "Finding: our
-// Conservative Crust closes narrow gaps").
+// closes at any density. Certifying the open family shows it (docs/certification.md,
+// "Finding: our Conservative Crust closes narrow gaps").
 //
 // Source of this statement. Neither the paper nor Dey's "ccrust" code is in the stored
 // corpora this was written from (searched: code, pages, docs), so the definition above is

@@ -726,8 +726,8 @@ class Fit_connect {
   // curve. It widens while its residual stays that of noise: widening multiplies the
   // residual of noise by about 1 but that of a fit the curve bends away from by more,
   // as its deviation grows with the window's length cubed. Ratio 2 was chosen on the
-  // `lfsnoise-full` and `noisy-full` suites (the trade-off is in README: heavier noise
-  // favours wider windows, a noise-free sampling none).
+  // `lfsnoise-full` and `noisy-full` suites (the trade-off is in docs/algorithms.md: heavier
+  // noise favours wider windows, a noise-free sampling none).
   // `one_hop` is window_fit(p, 1), computed once by the caller.
   std::optional<Arc_projection> smoothing_fit(Index p, std::vector<Index>& members, int widest,
                                               const Window_fit& one_hop) const {

@@ -3,11 +3,11 @@
 max epsilon, by quasi-Newton steps on a smooth surrogate of epsilon rather than by random climbing.
 
 The family is the one `curvebench ambiguity --mirror` searches (survey, section "Sampling Conditions",
-epsilon-sampling; README, "Certification"): S = R(S) for the mirror R(x, y) = (-x, y), C1 the closed C2
-cubic spline through its knots (the samples in C1's order, with free via points between them) on free
-knot intervals, and C2 = R(C1), so that epsilon is the same on both and only C1 is measured. The
-variables are the samples (one per mirror pair, x = 0 on the axis), the via points and the log knot
-intervals.
+epsilon-sampling; docs/tightness-and-ambiguity.md): S = R(S) for the mirror R(x, y) = (-x, y),
+C1 the closed C2 cubic spline through its knots (the samples in C1's order, with free via points
+between them) on free knot intervals, and C2 = R(C1), so that epsilon is the same on both and only
+C1 is measured. The variables are the samples (one per mirror pair, x = 0 on the axis), the via
+points and the log knot intervals.
 
 Why a surrogate: epsilon(C, S) = max over x on C of d(x, S) / lfs(x) is a max of kinked functions, on
 which the C++ hill climbing plateaus. Here C1 is sampled densely (PER points per length lfs, at least

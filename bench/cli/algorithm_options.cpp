@@ -14,7 +14,7 @@ void add_algorithm_file_option(CLI::App* command) {
   command
       ->add_option_function<std::string>(
           "--algorithm-file", [](const std::string& file) { bench::load_algorithm_file(file); },
-          "A JSON file of named external algorithms (README, 'Benchmark your own algorithm'); -a names them")
+          "A JSON file of named external algorithms (docs/own-algorithm.md); -a names them")
       ->trigger_on_parse()
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }

@@ -166,7 +166,7 @@ def large_run(driver):
     print(f"200,000 rows: explorer-data.js {size / 1e6:.1f} MB, page loaded and indexed in {load:.2f} s "
           f"(script {index_ms} ms), three filter changes with sorting {filter_s:.2f} s "
           f"({driver.find_element(By.ID, 'timing').text})")
-    # The times are printed for the README, not asserted: a loaded machine would fail them.
+    # The times are printed for docs/browser.md, not asserted: a loaded machine would fail them.
     check("200,000 rows: no console errors", not chromium.console_errors(driver))
 
 
