@@ -1,4 +1,3 @@
-// \file
 // The length of the diagonal of the axis-parallel bounding box of some points: the size
 // that relative tolerances are fractions of (the lfs floor and resolution, and the
 // survey's uniform noise, "Robustness to Noise": "delta is in terms of the bounding box

@@ -1,4 +1,3 @@
-// \file
 // An edge of a reconstructed or ground-truth curve, as the pair of indices of its two
 // points. A plain pair (not a class) so that edge lists sort, compare and hash with the
 // standard library, and so that geometry/ need not know about Boost.Graph.

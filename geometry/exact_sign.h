@@ -1,4 +1,3 @@
-// \file
 // The exact sign of a polynomial in input coordinates: the tool for predicates CGAL
 // does not provide (beta-skeleton lunes, sums of distances, ...).
 //

@@ -1,4 +1,3 @@
-// \file
 // The number types and kernels every layer of curvebench is written against.
 //
 // Decisions on geometry use `Kernel` (CGAL's Epick: exact predicates through a

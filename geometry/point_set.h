@@ -1,4 +1,3 @@
-// \file
 // A planar point set as the rest of curvebench sees it: distinct points, with the
 // bookkeeping that lets every output still name the points of the input.
 //

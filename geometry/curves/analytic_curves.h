@@ -1,4 +1,3 @@
-// \file
 // Smooth closed curves given by formulas: the survey's smooth curve C ("Definitions and
 // Notations": twice differentiable, so lfs > 0 and epsilon-samplings exist) in shapes
 // whose length, curvature and medial axis are known or easy to check, plus random smooth

@@ -1,4 +1,3 @@
-// \file
 // Exact tests on closed polylines, the fine chords through which generators check that the
 // curves they draw are simple (a random Fourier curve, a star polygon) or apart (the two
 // components of a nested pair). Decided by CGAL's exact predicates; candidate pairs come

@@ -1,4 +1,3 @@
-// \file
 // The survey's sharp-corner family ("Evaluation & Results", "Sharp Corners"): "a closed
 // convex curve ... generated using an arc of a unit circle opening to two tangent lines
 // joining at a specified angle to form a sharp corner". The epsilon-sampling condition

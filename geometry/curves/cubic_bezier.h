@@ -1,4 +1,3 @@
-// \file
 // The cubic Bézier piece: SVG paths and font outlines (cubic, and quadratic elevated to
 // cubic) are chains of them, and the survey's sampling tool ("Sampling Tools") and its
 // bunny data set work on cubic Bézier curves.

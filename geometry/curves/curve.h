@@ -1,4 +1,3 @@
-// \file
 // A planar curve whose geometry is known exactly: the ground truth that samplers draw
 // points from and that lfs, the sampling conditions and the metrics are measured on.
 //

@@ -1,4 +1,3 @@
-// \file
 // Where a curve crosses itself or another component: points of the medial axis' closure
 // (survey, "Definitions and Notations"), so lfs is 0 there, as at a sharp corner.
 //

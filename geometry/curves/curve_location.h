@@ -1,4 +1,3 @@
-// \file
 // A place on a Curve: which component, and the parameter s in [0, piece_count()] along it
 // (survey, "Definitions and Notations": a curve is one or several components). Samplers
 // record where each point was drawn; lfs, sharp points and measures report where they are.

@@ -1,4 +1,3 @@
-// \file
 // The name a generated curve carries (Curve::name): the curve_spec.h string that makes the
 // same curve again, e.g. "ellipse:a=2,b=1". Numbers are written in their shortest form
 // that reads back to the same double, so a name is an exact recipe.

@@ -1,4 +1,3 @@
-// \file
 // Curves named on the command line: one string per curve source, so that experiments,
 // the certifier and the CLI can say which ground truth they ran on, and Curve::name of a
 // generated curve is a spec that makes it again.

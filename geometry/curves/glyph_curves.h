@@ -1,4 +1,3 @@
-// \file
 // Font glyph outlines as curves: thousands of real closed curves with holes (several
 // components), sharp corners and features at many scales, each an exact union of lines
 // and Bézier pieces, for benchmarks in the spirit of the survey's Classic/Image sets with

@@ -1,4 +1,3 @@
-// \file
 // Turns drawing commands (SVG path data, font outlines) into curve components, so that
 // every path-like source treats degenerate input alike: the pieces of a curve must be
 // regular and join (curve.h), while drawings contain zero-length segments, lone points,

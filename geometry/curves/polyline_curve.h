@@ -1,4 +1,3 @@
-// \file
 // A ground truth given as points and edges (edge_io.h) as a Curve, so that the bundled
 // and user-made ground truths can be sampled, measured and drawn like any other curve
 // (survey, "Definitions and Notations": a curve is a set of closed or open components).

@@ -1,4 +1,3 @@
-// \file
 // Sharp corners beyond the survey's one convex family ("Evaluation & Results", "Sharp
 // Corners"): star polygons, non-convex, with every tip at the same opening angle, their
 // corners either sharp or rounded by circular fillets. A sharp star has 2K corners (lfs 0

@@ -1,4 +1,3 @@
-// \file
 // Curves drawn in SVG: the survey's benchmark data (stefango74/sampling2d, data/svg/) are
 // Inkscape drawings of cubic Bézier paths, from which the survey's sampling tool ("Sampling
 // Tools") draws epsilon-samplings with exact ground truth.

@@ -1,4 +1,3 @@
-// \file
 // Binary images for the survey's discrete sampling tool (survey, "Sampling Tools": "a
 // discrete sampling tool ... for extracting points from a given binary white-on-black
 // image"): the image type, netpbm files, and rasterizing a Curve into an image, so that

@@ -1,4 +1,3 @@
-// \file
 // The survey's discrete sampling tool (survey, "Sampling Tools": "It first extracts the
 // pixels lying on the object boundary by comparing each pixel with its 8-neighborhood.
 // Then ... randomly picks a pixel at position (x,y), inserts a point at the location

@@ -1,4 +1,3 @@
-// \file
 // Reading and writing edge lists and ground truths. A ground truth is a point file plus
 // an edge-list file beside it: `i j` per line, the 0-based indices of two points of the
 // point file. Edge lists follow the lexical rules of text_records.h (LF / CRLF / CR line

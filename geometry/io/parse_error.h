@@ -1,4 +1,3 @@
-// \file
 // The one exception every curvebench file reader throws for bad input, so that a
 // message always points a person at the exact place to fix: "FILE:LINE: what is wrong".
 // Line 0 means the file as a whole (it could not be read).

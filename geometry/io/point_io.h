@@ -1,4 +1,3 @@
-// \file
 // Reading and writing point files: every point-set format found in the public data sets
 // curvebench uses, and one canonical format for writing.
 //

@@ -1,4 +1,3 @@
-// \file
 // SVG pictures of point sets and curves, for a person to look at: layers of edges and
 // points drawn in the order they are added (add a ground truth first to see a
 // reconstruction on top of it), each with its own style and optional legend entry.

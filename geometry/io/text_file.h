@@ -1,4 +1,3 @@
-// \file
 // Whole-file text I/O for curvebench's readers and writers: one place that turns an
 // unreadable or unwritable file into an error naming the path, so that every format
 // reports it the same way.

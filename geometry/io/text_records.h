@@ -1,4 +1,3 @@
-// \file
 // The lexical layer under curvebench's text formats (point files, edge lists, Triangle
 // .node): a text is a sequence of records, one per line that holds data, and each record
 // is a list of fields. The rules, shared by every format so they cannot drift apart:

@@ -1,4 +1,3 @@
-// \file
 // The curve point nearest to a given point: where a point of a plain point file lies on
 // its curve, so that a sampling read back from disk can be measured (rho needs the
 // interval between two samples) or given lfs noise along the normal.

@@ -1,4 +1,3 @@
-// \file
 // The largest value of a function along a stretch of curve, as the sampling measures
 // (survey, "Definitions and Notations": epsilon is a supremum over the curve, the reach
 // of an interval an infimum) and the safe sampler need it. Evaluated on the

@@ -1,4 +1,3 @@
-// \file
 // The local feature size (survey, "Definitions and Notations"): lfs(p) for a point p of
 // the curve is its distance to the nearest point of the medial axis. Every sampling
 // condition (epsilon, rho) and the lfs noise model are measured in it.

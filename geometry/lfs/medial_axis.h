@@ -1,4 +1,3 @@
-// \file
 // The medial axis of a curve (survey, "Definitions and Notations": the closure of the
 // points of the plane with two or more closest points on the curve), estimated as the
 // Voronoi vertices of a dense point sample of the curve, i.e. the circumcenters of its

@@ -1,4 +1,3 @@
-// \file
 // Distance from a query point to the nearest of a fixed set of points: the distance to the
 // sampled medial axis that is lfs, and to a point sampling that epsilon divides by lfs
 // (survey, "Definitions and Notations").

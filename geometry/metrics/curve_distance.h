@@ -1,4 +1,3 @@
-// \file
 // How far a reconstructed curve C' lies from the original C: the survey's "Evaluation
 // Criteria". Both curves are edge chains (points + edges). Each is sampled uniformly and
 // densely; every sample s of one curve is mapped to its closest point M(s) on the other

@@ -1,4 +1,3 @@
-// \file
 // What kind of curve an edge list is (survey, "Evaluation & Results", "Qualitative
 // Comparison": manifold, open, multiple curves): vertex degrees and connected components.
 // Pure combinatorics on indices, no geometry.

@@ -1,4 +1,3 @@
-// \file
 // The closest point of a set of segments (a polyline, a ground truth, a reconstruction) to
 // a query point: the closest-point mapping M : C -> C' of the survey's "Evaluation
 // Criteria". Metric values only (output), so evaluated in double.

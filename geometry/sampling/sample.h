@@ -1,4 +1,3 @@
-// \file
 // A point sampling of a Curve with everything known about it: the ground truth that
 // reconstructions are scored against and the sampling measures read (survey, "Sampling
 // Tools"). Points of component c come in order along c, so the ground-truth edges are the

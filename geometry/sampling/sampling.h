@@ -1,4 +1,3 @@
-// \file
 // Samplers of a Curve, each returning a Sample (points, ground-truth edges, lfs, where
 // each point lies on the curve). Survey, "Sampling Tools" (epsilon-sampling by a greedy
 // walk), "Definitions and Notations" (epsilon-sampling, reach) and "Feature Size

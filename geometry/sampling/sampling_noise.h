@@ -1,4 +1,3 @@
-// \file
 // Perturbations of a Sample, as in the survey's "Robustness to Noise" and "Outliers":
 // they move the curve points (or add outlier points) and keep the ground truth, the lfs
 // and the curve location of each point as they were. Seeded (Seeded_random): the same

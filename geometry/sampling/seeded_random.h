@@ -1,4 +1,3 @@
-// \file
 // The random numbers behind every seeded sampler and noise model (survey, "Robustness to
 // Noise" and "Outliers"): std::mt19937_64 (its output sequence is fixed by the C++
 // standard) mapped to doubles by our own arithmetic, never by
