@@ -18,9 +18,12 @@ set(curvebench_exported_libraries
 if(TARGET curvebench_benchmark_main)
   list(APPEND curvebench_exported_libraries curvebench_benchmark_main)
 endif()
+# The same names in the build tree (aliases), so that code written against the package
+# (python/, a user's subproject) builds in-tree unchanged.
 foreach(library IN LISTS curvebench_exported_libraries)
   string(REGEX REPLACE "^curvebench_" "" export_name ${library})
   set_target_properties(${library} PROPERTIES EXPORT_NAME ${export_name})
+  add_library(curvebench::${export_name} ALIAS ${library})
 endforeach()
 
 set(curvebench_install_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/curvebench)
