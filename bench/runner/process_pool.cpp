@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace curvebench::bench {
@@ -25,6 +26,11 @@ struct Child {
   Clock::time_point deadline;
   std::string output;
 };
+
+Fork_hooks& hooks() {
+  static Fork_hooks hooks;
+  return hooks;
+}
 
 [[noreturn]] void run_child(std::size_t task, int pipe, const Process_pool_options& options,
                             const std::function<std::string(std::size_t)>& run) {
@@ -59,6 +65,8 @@ std::string time_limit_text(double seconds) {
 
 }  // namespace
 
+Fork_hooks set_fork_hooks(Fork_hooks replacement) { return std::exchange(hooks(), std::move(replacement)); }
+
 void run_in_processes(std::size_t count, const Process_pool_options& options,
                       const std::function<std::string(std::size_t)>& task,
                       const std::function<void(std::size_t, Task_outcome)>& done) {
@@ -87,9 +95,14 @@ void run_in_processes(std::size_t count, const Process_pool_options& options,
       int fds[2];
       if (pipe(fds) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
       std::fflush(nullptr);  // or the child would flush the parent's buffered output again
+      const Fork_hooks& around = hooks();
+      if (around.before) around.before();
       const pid_t pid = fork();
-      if (pid < 0) throw std::system_error(errno, std::generic_category(), "fork");
+      const int fork_error = errno;
+      if (pid != 0 && around.after_parent) around.after_parent();
+      if (pid < 0) throw std::system_error(fork_error, std::generic_category(), "fork");
       if (pid == 0) {
+        if (around.after_child) around.after_child();
         close(fds[0]);
         for (const Child& other : running) close(other.pipe);
         run_child(next, fds[1], options, task);

@@ -32,6 +32,20 @@ struct Process_pool_options {
   std::size_t memory_limit_bytes = 0;  // address-space limit of each child; 0: none
 };
 
+// Calls made around each fork() of run_in_processes, for a host process whose own state
+// must be made safe to fork: an embedded interpreter (python/ takes Python's GIL and runs
+// PyOS_BeforeFork and PyOS_AfterFork_Parent or _Child, as os.fork() does). An empty
+// function is no call.
+struct Fork_hooks {
+  std::function<void()> before;        // in the parent, just before fork()
+  std::function<void()> after_parent;  // in the parent, just after fork(), also when it failed
+  std::function<void()> after_child;   // in the child, before anything else
+};
+
+// Makes `hooks` those of every later fork of run_in_processes in this process (not of the
+// programs that exec: algorithms start, which exec at once); returns the hooks it replaces.
+Fork_hooks set_fork_hooks(Fork_hooks hooks);
+
 // Runs task(0) ... task(count - 1); calls done(i, outcome) in the parent as each ends, in
 // the order they end. Throws std::system_error if a pipe or process cannot be made.
 void run_in_processes(std::size_t count, const Process_pool_options& options,

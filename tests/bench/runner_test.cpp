@@ -33,6 +33,32 @@ namespace {
 
 using Kind = Task_outcome::Kind;
 
+// The hooks a host process sets (python/ does, for its interpreter): `before` and
+// `after_parent` once per fork in the parent, `after_child` in the child before its task.
+TEST(ProcessPool, ForkHooksRunAroundEachFork) {
+  int before = 0, after_parent = 0;
+  static bool hooked_child = false;  // set in the child's copy only
+  const Fork_hooks previous = set_fork_hooks({.before = [&] { ++before; },
+                                              .after_parent = [&] { ++after_parent; },
+                                              .after_child = [] { hooked_child = true; }});
+  std::vector<std::string> outputs(5);
+  run_in_processes(
+      5, {.workers = 2}, [](std::size_t) { return std::string(hooked_child ? "hooked" : "plain"); },
+      [&](std::size_t i, Task_outcome outcome) { outputs[i] = outcome.output; });
+  const Fork_hooks ours = set_fork_hooks(previous);
+  EXPECT_TRUE(ours.before && ours.after_parent && ours.after_child);
+  EXPECT_EQ(before, 5);
+  EXPECT_EQ(after_parent, 5);
+  EXPECT_FALSE(hooked_child);
+  EXPECT_EQ(outputs, std::vector<std::string>(5, "hooked"));
+  // Without hooks (empty functions), forks go on as before.
+  run_in_processes(
+      2, {.workers = 2}, [](std::size_t) { return std::string(hooked_child ? "hooked" : "plain"); },
+      [&](std::size_t i, Task_outcome outcome) { outputs[i] = outcome.output; });
+  EXPECT_EQ(outputs[0], "plain");
+  EXPECT_EQ(before, 5);
+}
+
 TEST(ProcessPool, ACrashOrAHangCostsOnlyItsOwnTask) {
   std::map<std::size_t, Task_outcome> outcomes;
   const auto start = std::chrono::steady_clock::now();
