@@ -6,6 +6,7 @@
 
 #include <boost/pending/disjoint_sets.hpp>
 
+#include "geometry/point_set.h"
 #include "graphs/alpha_shape_boundary.h"
 #include "graphs/beta_skeleton.h"
 #include "graphs/delaunay_graph.h"
@@ -55,6 +56,15 @@ std::span<const Proximity_graph> proximity_graphs() { return table; }
 const Proximity_graph* find_proximity_graph(std::string_view name) {
   const auto it = std::find_if(std::begin(table), std::end(table), [&](const auto& g) { return g.name == name; });
   return it == std::end(table) ? nullptr : it;
+}
+
+std::vector<geometry::Edge> build_graph(const Proximity_graph& graph, std::span<const geometry::Point> points,
+                                        const Proximity_graph_parameters& parameters) {
+  const geometry::PointSet distinct(std::vector<geometry::Point>(points.begin(), points.end()));
+  const Delaunay_triangulation dt(distinct.points());
+  std::vector<geometry::Edge> edges = edge_list(graph.build(dt, parameters));
+  for (auto& [i, j] : edges) i = distinct.input_index(i), j = distinct.input_index(j);
+  return geometry::canonical_edges(std::move(edges));
 }
 
 double connecting_alpha(const Delaunay_triangulation& dt) {

@@ -5,7 +5,10 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
+#include "geometry/edge.h"
+#include "geometry/kernel.h"
 #include "graphs/delaunay_triangulation.h"
 #include "graphs/graph.h"
 
@@ -31,6 +34,13 @@ struct Proximity_graph {
 std::span<const Proximity_graph> proximity_graphs();
 // The row named `name` in proximity_graphs(), or nullptr if there is none.
 const Proximity_graph* find_proximity_graph(std::string_view name);
+
+// Builds `graph` on any point list, as algorithms/registry.h's reconstruct() runs an
+// algorithm: exact duplicates are merged into their first occurrence, which alone gets
+// edges (geometry::PointSet), and the edges, canonical, are between input indices. Throws
+// std::invalid_argument for a non-finite coordinate, and passes on the builder's errors.
+std::vector<geometry::Edge> build_graph(const Proximity_graph& graph, std::span<const geometry::Point> points,
+                                        const Proximity_graph_parameters& parameters = {});
 
 // The smallest alpha whose alpha-complex contains the EMST, so it is connected:
 // (longest EMST edge / 2)^2, rounded up. A scale-free default for the alpha-shape.

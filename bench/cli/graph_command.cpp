@@ -20,8 +20,7 @@ struct Graph_options {
 void run_graph(const Graph_options& options) {
   const graphs::Proximity_graph& graph = *graphs::find_proximity_graph(options.kind);
   const geometry::PointSet points = load_point_set(options.input);
-  const graphs::Delaunay_triangulation dt(points.points());
-  const std::vector<geometry::Edge> edges = graphs::edge_list(graph.build(dt, options.parameters));
+  const std::vector<geometry::Edge> edges = graphs::build_graph(graph, points.points(), options.parameters);
 
   geometry::write_edges(options.output, to_input_indices(points, edges));
   if (!options.svg.empty()) write_graph_picture(options.svg, points.points(), edges, graph.name, options.input);

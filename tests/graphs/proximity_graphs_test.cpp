@@ -109,6 +109,37 @@ RC_GTEST_PROP(GabrielGraph, EqualsBruteForce, ()) {
   RC_ASSERT(edges_of(gabriel_graph(points)) == testing::brute_force_gabriel_graph(points));
 }
 
+// build_graph takes any point list: each duplicate is merged into its first occurrence,
+// which alone gets edges, on the input's indices. The oracle: the brute-force graph of the
+// distinct points, renumbered by hand to their first occurrences.
+RC_GTEST_PROP(BuildGraph, MergesDuplicatesIntoTheirFirstOccurrence, ()) {
+  const auto distinct_points = *point_sets(12);
+  // Each input point is one of the distinct ones, every distinct one at least once, in an
+  // order drawn by sorting on random keys.
+  std::vector<std::size_t> picks(distinct_points.size());
+  std::iota(picks.begin(), picks.end(), std::size_t{0});
+  if (!distinct_points.empty())
+    for (const std::size_t extra : *rc::gen::container<std::vector<std::size_t>>(
+             rc::gen::inRange<std::size_t>(0, distinct_points.size())))
+      picks.push_back(extra);
+  const auto keys = *rc::gen::container<std::vector<int>>(picks.size(), rc::gen::inRange(0, 1000));
+  std::vector<std::size_t> order(picks.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  std::vector<Point> input;
+  std::vector<std::size_t> first(distinct_points.size(), std::numeric_limits<std::size_t>::max());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const std::size_t k = picks[order[i]];
+    input.push_back(distinct_points[k]);
+    first[k] = std::min(first[k], i);
+  }
+  Edges expected;
+  for (const auto& [i, j] : testing::brute_force_gabriel_graph(distinct_points))
+    expected.emplace_back(std::min(first[i], first[j]), std::max(first[i], first[j]));
+  std::sort(expected.begin(), expected.end());
+  RC_ASSERT(build_graph(*find_proximity_graph("gabriel"), input) == expected);
+}
+
 RC_GTEST_PROP(RelativeNeighborhoodGraph, EqualsBruteForce, ()) {
   const auto points = *point_sets(16);
   RC_ASSERT(edges_of(relative_neighborhood_graph(points)) == testing::brute_force_relative_neighborhood_graph(points));
