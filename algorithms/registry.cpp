@@ -78,6 +78,34 @@ bool valid_name(std::string_view name) {
   });
 }
 
+// Throws std::invalid_argument for a description that could not stand in the registry:
+// register_algorithm's rules.
+void check_description(std::string_view caller, const Algorithm& algorithm, bool name_taken) {
+  const std::string name = std::string(caller) + "(\"" + std::string(algorithm.name) + "\")";
+  if (!valid_name(algorithm.name))
+    throw std::invalid_argument(name + ": a name is lowercase letters, digits, '-', '_' and '.', and does not end in " +
+                                std::string(outlier_filter_suffix));
+  if (name_taken) throw std::invalid_argument(name + ": the name is taken");
+  if (!algorithm.reconstruct) throw std::invalid_argument(name + ": no reconstruct function");
+  for (const Parameter& parameter : algorithm.parameters)
+    if (!(parameter.minimum <= parameter.default_value && parameter.default_value <= parameter.maximum))
+      throw std::invalid_argument(name + ": parameter " + std::string(parameter.name) +
+                                  "'s default is outside its range");
+}
+
+// The session algorithms (add_session_algorithm) and the texts their views point into: a
+// deque does not move its elements, so the addresses handed out stay valid.
+struct Session {
+  std::mutex mutex;
+  std::deque<std::string> texts;
+  std::deque<Algorithm> algorithms;
+};
+
+Session& session_table() {
+  static Session session;
+  return session;
+}
+
 }  // namespace
 
 std::span<const Algorithm> registry() {
@@ -90,34 +118,52 @@ std::span<const Algorithm> registered_algorithms() { return registry().subspan(t
 
 void register_algorithm(Algorithm algorithm) {
   Table& all = table();
-  const std::string name(algorithm.name);
-  if (!valid_name(algorithm.name))
-    throw std::invalid_argument("register_algorithm(\"" + name +
-                                "\"): a name is lowercase letters, digits, '-', '_' and '.', and does not end in " +
-                                std::string(outlier_filter_suffix));
-  if (std::ranges::find(all.algorithms, algorithm.name, &Algorithm::name) != all.algorithms.end())
-    throw std::invalid_argument("register_algorithm(\"" + name + "\"): the name is taken");
-  if (!algorithm.reconstruct)
-    throw std::invalid_argument("register_algorithm(\"" + name + "\"): no reconstruct function");
-  for (const Parameter& parameter : algorithm.parameters)
-    if (!(parameter.minimum <= parameter.default_value && parameter.default_value <= parameter.maximum))
-      throw std::invalid_argument("register_algorithm(\"" + name + "\"): parameter " + std::string(parameter.name) +
-                                  "'s default is outside its range");
+  const bool taken = std::ranges::find(all.algorithms, algorithm.name, &Algorithm::name) != all.algorithms.end();
+  check_description("register_algorithm", algorithm, taken);
   if (all.read)
-    throw std::logic_error("register_algorithm(\"" + name +
+    throw std::logic_error("register_algorithm(\"" + std::string(algorithm.name) +
                            "\"): the registry has been read already; register before main (Registration)");
   all.algorithms.push_back(std::move(algorithm));
+}
+
+const Algorithm& add_session_algorithm(Algorithm algorithm) {
+  const auto all = registry();
+  Session& session = session_table();
+  const std::scoped_lock lock(session.mutex);
+  const bool taken = std::ranges::find(all, algorithm.name, &Algorithm::name) != all.end() ||
+                     std::ranges::find(session.algorithms, algorithm.name, &Algorithm::name) != session.algorithms.end();
+  check_description("add_session_algorithm", algorithm, taken);
+  // The views are re-pointed at copies that live as long as the program.
+  const auto kept = [&session](std::string_view& text) { text = session.texts.emplace_back(text); };
+  kept(algorithm.name), kept(algorithm.title), kept(algorithm.reference), kept(algorithm.category);
+  kept(algorithm.capabilities.time_complexity), kept(algorithm.condition.statement);
+  for (Parameter& parameter : algorithm.parameters) kept(parameter.name), kept(parameter.meaning);
+  return session.algorithms.emplace_back(std::move(algorithm));
+}
+
+std::vector<const Algorithm*> session_algorithms() {
+  Session& session = session_table();
+  const std::scoped_lock lock(session.mutex);
+  std::vector<const Algorithm*> added;
+  for (const Algorithm& algorithm : session.algorithms) added.push_back(&algorithm);
+  return added;
 }
 
 Registration::Registration(Algorithm algorithm) { register_algorithm(std::move(algorithm)); }
 
 const Algorithm* find_algorithm(std::string_view name) {
-  const auto all = registry();
-  const auto found = std::ranges::find(all, name, &Algorithm::name);
-  if (found != all.end()) return &*found;
+  const auto found = [](std::string_view wanted) -> const Algorithm* {
+    const auto all = registry();
+    if (const auto it = std::ranges::find(all, wanted, &Algorithm::name); it != all.end()) return &*it;
+    Session& session = session_table();
+    const std::scoped_lock lock(session.mutex);
+    const auto added = std::ranges::find(session.algorithms, wanted, &Algorithm::name);
+    return added != session.algorithms.end() ? &*added : nullptr;
+  };
+  if (const Algorithm* algorithm = found(name)) return algorithm;
   if (!name.ends_with(outlier_filter_suffix)) return nullptr;
-  const auto base = std::ranges::find(all, name.substr(0, name.size() - outlier_filter_suffix.size()), &Algorithm::name);
-  if (base == all.end()) return nullptr;
+  const Algorithm* base = found(name.substr(0, name.size() - outlier_filter_suffix.size()));
+  if (!base) return nullptr;
   // Built on first use and kept, with its name and title, for the program's lifetime (a
   // deque does not move its elements), as the registry's own entries are.
   static std::mutex mutex;

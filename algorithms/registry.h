@@ -7,6 +7,7 @@
 
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "algorithms/algorithm.h"
 
@@ -40,11 +41,24 @@ struct Registration {
   explicit Registration(Algorithm algorithm);
 };
 
+// Adds an algorithm while the program runs, at any time, also after the registry has been
+// read: a Python function (python/), say. It is found by find_algorithm, and so by every
+// verb that takes a name, but registry() does not list it, since a span of the registry
+// may be held. Its texts and parameters are copied and kept, with it, for the program's
+// lifetime (any strings will do, not only literals). Returns it; its address is stable.
+// Throws std::invalid_argument as register_algorithm does, and for a name taken by a
+// registered or an earlier session algorithm.
+const Algorithm& add_session_algorithm(Algorithm algorithm);
+
+// The algorithms add_session_algorithm added, in the order added.
+std::vector<const Algorithm*> session_algorithms();
+
 // A registered algorithm behind the outlier pre-filter: "nn-crust+outlier-filter".
 inline constexpr std::string_view outlier_filter_suffix = "+outlier-filter";
 
-// nullptr if no algorithm has that name. NAME+outlier-filter is NAME behind the outlier
-// pre-filter (outlier_filter.h), for any registered NAME.
+// nullptr if no algorithm has that name: a registered one, then a session one.
+// NAME+outlier-filter is NAME behind the outlier pre-filter (outlier_filter.h), for any
+// registered or session NAME.
 const Algorithm* find_algorithm(std::string_view name);
 
 // Runs `algorithm` on any point list: checks the parameters, merges exact duplicates
