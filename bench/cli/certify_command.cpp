@@ -4,8 +4,6 @@
 #include <iostream>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "algorithms/registry.h"
 #include "bench/cli/algorithm_options.h"
 #include "bench/runner/certification.h"
@@ -35,30 +33,11 @@ void run(Certify_command_options& o) {
   o.certify.run.pictures = bench::Pictures::failures;
   const bench::Certify_summary s = bench::certify_algorithm(*algorithm, o.certify);
 
-  const std::string measure(certify::measure_name(s.measure));
-  nlohmann::json counterexamples = nlohmann::json::array();
-  for (const bench::Counterexample& c : s.counterexamples)
-    counterexamples.push_back({{"input", c.input}, {"points", c.points}, {measure, c.measured},
-                               {"path", c.directory.string()}, {"replay", (c.directory / "replay.sh").string()}});
-  const nlohmann::json summary = {
-      {"algorithm", s.algorithm},
-      {"bound", s.bound},
-      {"measure", measure},
-      {"requested_level", s.requested_level},
-      {"curves", o.certify.curves},
-      {"seed", o.certify.seed},
-      {"cases", s.cases},
-      {"passed", s.passed},
-      {"failures", s.failures},
-      {"inconclusive", s.inconclusive},
-      {"hypothesis_violations", s.hypothesis_violations},
-      {"counterexamples", counterexamples},
-      {"results", (o.certify.run.output / "results.csv").string()},
-  };
   if (o.json) {
-    std::cout << summary.dump(2) << '\n';
+    std::cout << bench::certify_summary_json(s, o.certify) << '\n';
     return;
   }
+  const std::string measure(certify::measure_name(s.measure));
   std::cout << s.algorithm << ": " << measure << " < " << s.bound << ", " << s.cases << " " << o.certify.curves
             << " cases sampled at " << measure << " " << s.requested_level << ": " << s.passed << " passed, " << s.failures
             << " failures, " << s.inconclusive << " inconclusive, " << s.hypothesis_violations

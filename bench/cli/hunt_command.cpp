@@ -1,8 +1,5 @@
 #include "bench/cli/hunt_command.h"
 
-#include <nlohmann/json.hpp>
-
-#include <chrono>
 #include <iostream>
 #include <memory>
 
@@ -18,27 +15,12 @@ struct Hunt_command_options {
 };
 
 void run_hunt(const Hunt_command_options& o) {
-  const auto start = std::chrono::steady_clock::now();
   const bench::Hunt_summary summary = bench::hunt(o.hunt);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (o.json) {
-    nlohmann::json findings = nlohmann::json::array();
-    for (const bench::Hunt_finding& f : summary.findings) {
-      nlohmann::json points = nlohmann::json::array();
-      for (const auto& p : f.points) points.push_back({p.x(), p.y()});
-      findings.push_back({{"kind", f.kind},
-                          {"message", f.message},
-                          {"points", points},
-                          {"shrink_steps", f.shrink_steps},
-                          {"replay", f.directory.empty() ? nlohmann::json() : nlohmann::json((f.directory / "replay.sh").string())}});
-    }
-    std::cout << nlohmann::json{{"algorithm", o.hunt.algorithm}, {"seed", o.hunt.seed}, {"cases", summary.cases},
-                                {"seconds", seconds}, {"findings", findings}}
-                     .dump(2)
-              << '\n';
+    std::cout << bench::hunt_summary_json(summary, o.hunt) << '\n';
     return;
   }
-  std::cout << "hunt " << o.hunt.algorithm << ": " << summary.cases << " cases in " << seconds << " s, "
+  std::cout << "hunt " << o.hunt.algorithm << ": " << summary.cases << " cases in " << summary.seconds << " s, "
             << summary.findings.size() << (summary.findings.size() == 1 ? " finding" : " findings") << '\n';
   for (const bench::Hunt_finding& f : summary.findings) {
     std::cout << "  " << f.kind << " on " << f.points.size() << " points (shrunk in " << f.shrink_steps

@@ -3,10 +3,8 @@
 #include <iostream>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "bench/cli/sample_files.h"
-#include "certify/sampling_measure.h"
+#include "bench/runner/sampling_report.h"
 #include "geometry/curves/curve_spec.h"
 #include "geometry/sampling/sampling.h"
 
@@ -19,10 +17,6 @@ struct Measure_options {
   std::optional<double> minimum_lfs;
 };
 
-nlohmann::json location(const geometry::Curve_location& where) {
-  return {{"component", where.component}, {"parameter", where.parameter}};
-}
-
 void run_measure(Measure_options o) {
   const geometry::Local_feature_size lfs(geometry::make_curve(o.curve));
   if (o.edges.empty()) {  // BASE.edges beside BASE.xy, as `curvebench sample` writes them
@@ -31,20 +25,7 @@ void run_measure(Measure_options o) {
   }
   geometry::Sample sample = read_sample(lfs, o.points, o.edges);
   sample.minimum_lfs = o.minimum_lfs.value_or(geometry::default_minimum_lfs(lfs));
-  const certify::Sampling_measure m = certify::measure_sampling(lfs, sample);
-  const nlohmann::json report = {
-      {"curve", lfs.curve().name},
-      {"points", sample.size()},
-      {"edges", o.edges.string()},
-      {"minimum_lfs", sample.minimum_lfs},
-      {"epsilon", m.epsilon.epsilon},
-      {"epsilon_at", location(m.epsilon.where)},
-      {"rho", m.rho.rho},
-      {"rho_edge", {m.rho.edge.first, m.rho.edge.second}},
-      {"uniformity", m.uniformity.uniformity},
-      {"uniformity_at_point", m.uniformity.point},
-  };
-  std::cout << report.dump(2) << '\n';
+  std::cout << bench::measure_report_json(lfs, sample, o.edges.string()) << '\n';
 }
 
 }  // namespace

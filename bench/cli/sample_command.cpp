@@ -6,39 +6,21 @@
 
 #include "bench/cli/sample_files.h"
 #include "geometry/curves/curve_spec.h"
-#include "geometry/sampling/sampling.h"
-#include "geometry/sampling/sampling_noise.h"
+#include "bench/runner/curve_sampling.h"
 
 namespace curvebench::cli {
 namespace {
 
 struct Sample_options {
   std::string curve;
-  std::optional<double> epsilon, rho;
-  std::optional<std::size_t> uniform, random;
-  bool safe = false, crossing_samples = false;
-  std::optional<double> minimum_lfs, uniform_noise, lfs_noise, outliers;
-  std::uint64_t seed = 0;
+  bench::Sampling_request request;
   std::filesystem::path base;
   bool svg = false;
 };
 
-geometry::Sample draw(const Sample_options& o, const geometry::Local_feature_size& lfs) {
-  const double floor = o.minimum_lfs.value_or(geometry::default_minimum_lfs(lfs));
-  if (o.epsilon) return (o.safe ? geometry::safe_epsilon_sampling : geometry::epsilon_sampling)(lfs, *o.epsilon, floor);
-  if (o.rho) return (o.safe ? geometry::safe_rho_sampling : geometry::rho_sampling)(lfs, *o.rho, floor);
-  if (o.uniform) return geometry::uniform_sampling(lfs, *o.uniform);
-  return geometry::random_sampling(lfs, *o.random, o.seed);
-}
-
 void run_sample(const Sample_options& o) {
   const geometry::Local_feature_size lfs(geometry::make_curve(o.curve));
-  geometry::Sample sample = draw(o, lfs);
-  if (o.crossing_samples) sample = geometry::with_crossing_samples(lfs, std::move(sample));
-  // Independent streams for the noise and the outliers, both derived from --seed.
-  if (o.uniform_noise) sample = geometry::with_uniform_noise(std::move(sample), *o.uniform_noise, o.seed + 1);
-  if (o.lfs_noise) sample = geometry::with_lfs_noise(lfs, std::move(sample), *o.lfs_noise, o.seed + 2);
-  if (o.outliers) sample = geometry::with_outliers(std::move(sample), *o.outliers, o.seed + 3);
+  const geometry::Sample sample = bench::sample_curve(lfs, o.request);
   write_sample(o.base, sample);
   if (o.svg) write_sample_picture(std::filesystem::path(o.base) += ".svg", lfs, sample);
   std::cout << o.base.string() << ".xy: " << sample.size() << " points, " << sample.edges.size() << " edges";
@@ -60,19 +42,19 @@ void add_sample_command(CLI::App& app) {
                                            "glyph:[FONT:]CHAR")
       ->required();
   auto* how = command->add_option_group("sampler", "exactly one sampler");
-  how->add_option("--epsilon", o->epsilon, "epsilon-sampling by the survey's greedy walk");
-  how->add_option("--rho", o->rho, "HNN-Crust's rho-sampling");
-  how->add_option("--uniform", o->uniform, "N points at equal arc-length steps");
-  how->add_option("--random", o->random, "N points uniform in arc length (--seed)");
+  how->add_option("--epsilon", o->request.epsilon, "epsilon-sampling by the survey's greedy walk");
+  how->add_option("--rho", o->request.rho, "HNN-Crust's rho-sampling");
+  how->add_option("--uniform", o->request.uniform, "N points at equal arc-length steps");
+  how->add_option("--random", o->request.random, "N points uniform in arc length (--seed)");
   how->require_option(1);
-  command->add_flag("--safe", o->safe, "with --epsilon or --rho: guarantee the measured epsilon (rho) stays below it");
-  command->add_flag("--crossing-samples", o->crossing_samples,
+  command->add_flag("--safe", o->request.safe, "with --epsilon or --rho: guarantee the measured epsilon (rho) stays below it");
+  command->add_flag("--crossing-samples", o->request.crossing_samples,
                     "a sample on every crossing, shared by both branches (degree 4 in the ground truth)");
-  command->add_option("--min-lfs", o->minimum_lfs, "lfs floor near sharp points (default 1e-3 of the bbox diagonal)");
-  command->add_option("--uniform-noise", o->uniform_noise, "add uniform noise of extent DELTA x bbox diagonal");
-  command->add_option("--lfs-noise", o->lfs_noise, "add noise along the normal, uniform in [-DELTA, DELTA] x lfs");
-  command->add_option("--outliers", o->outliers, "add PERCENT outliers uniform in the bounding box");
-  command->add_option("--seed", o->seed, "seed of every random choice")->capture_default_str();
+  command->add_option("--min-lfs", o->request.minimum_lfs, "lfs floor near sharp points (default 1e-3 of the bbox diagonal)");
+  command->add_option("--uniform-noise", o->request.uniform_noise, "add uniform noise of extent DELTA x bbox diagonal");
+  command->add_option("--lfs-noise", o->request.lfs_noise, "add noise along the normal, uniform in [-DELTA, DELTA] x lfs");
+  command->add_option("--outliers", o->request.outliers, "add PERCENT outliers uniform in the bounding box");
+  command->add_option("--seed", o->request.seed, "seed of every random choice")->capture_default_str();
   command->add_option("-o,--output", o->base, "write BASE.xy, BASE.edges, BASE.lfs, BASE.labels")->required();
   command->add_flag("--svg", o->svg, "also draw curve, medial axis and samples to BASE.svg");
   command->callback([o] { run_sample(*o); });

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <utility>
 
-#include "geometry/lfs/curve_projection.h"
+#include "bench/runner/sampling_report.h"
 #include "geometry/io/edge_io.h"
 #include "geometry/io/point_io.h"
 #include "geometry/io/svg_picture.h"
@@ -21,28 +21,6 @@ void write_lines(const std::filesystem::path& file, const Range& values, Write w
   std::ofstream out(file);
   for (const auto& v : values) write(out, v) << '\n';
   if (!out) throw std::runtime_error("cannot write " + file.string());
-}
-
-// Edge files are canonical (i < j), but an edge stands for the interval from its first
-// point forward along the curve to its second (measure_rho reads it so): turn each edge of
-// a closed component whose points are neighbours the other way round along it, so that its
-// interval holds no other sample. Without this, `measure` took a closing edge (first, last)
-// as the whole loop but one gap and over-estimated rho (1.10 for a sampling of rho 0.98).
-void orient_along_the_curve(const geometry::Local_feature_size& lfs, geometry::Sample& sample) {
-  const auto& components = lfs.curve().components;
-  std::vector<std::vector<std::pair<double, std::size_t>>> along(components.size());
-  for (std::size_t i = 0; i < sample.size(); ++i) along[sample.locations[i].component].emplace_back(sample.locations[i].parameter, i);
-  std::vector<std::size_t> position(sample.size());
-  for (auto& points : along) {
-    std::sort(points.begin(), points.end());
-    for (std::size_t k = 0; k < points.size(); ++k) position[points[k].second] = k;
-  }
-  for (auto& [i, j] : sample.edges) {
-    const std::size_t c = sample.locations[i].component;
-    if (c != sample.locations[j].component || !components[c].closed()) continue;
-    const std::size_t count = along[c].size();
-    if ((position[i] + 1) % count != position[j] && (position[j] + 1) % count == position[i]) std::swap(i, j);
-  }
 }
 
 }  // namespace
@@ -92,22 +70,15 @@ void write_sample_picture(const std::filesystem::path& file, const geometry::Loc
 
 geometry::Sample read_sample(const geometry::Local_feature_size& lfs, const std::filesystem::path& points,
                              const std::filesystem::path& edges) {
-  geometry::Sample sample;
-  sample.points = geometry::read_point_file(points).points;
-  if (!edges.empty()) sample.edges = geometry::read_edges(edges);
-  for (const auto& [i, j] : sample.edges)
-    if (i >= sample.size() || j >= sample.size())
+  std::vector<geometry::Point> read = geometry::read_point_file(points).points;
+  std::vector<geometry::Edge> truth;
+  if (!edges.empty()) truth = geometry::read_edges(edges);
+  for (const auto& [i, j] : truth)
+    if (i >= read.size() || j >= read.size())
       throw std::invalid_argument(edges.string() + ": edge " + std::to_string(i) + " " + std::to_string(j) +
-                                  " names a point beyond the " + std::to_string(sample.size()) + " of " +
+                                  " names a point beyond the " + std::to_string(read.size()) + " of " +
                                   points.string());
-  for (const auto& p : sample.points) {
-    const auto location = geometry::nearest_curve_location(lfs, p);
-    sample.locations.push_back(location);
-    sample.lfs.push_back(lfs.at(location.component, location.parameter));
-    sample.labels.push_back(geometry::Sample_label::curve_point);
-  }
-  orient_along_the_curve(lfs, sample);
-  return sample;
+  return bench::located_sample(lfs, std::move(read), std::move(truth));
 }
 
 }  // namespace curvebench::cli

@@ -16,8 +16,8 @@ void write_sample(const std::filesystem::path& base, const geometry::Sample& sam
 void write_sample_picture(const std::filesystem::path& file, const geometry::Local_feature_size& lfs,
                           const geometry::Sample& sample);
 
-// A point file as a Sample of the curve: each point located at its nearest curve point,
-// edges from `edges` (may be empty), every point a curve point.
+// A point file as a Sample of the curve (bench/runner/sampling_report.h's located_sample),
+// edges from `edges` (may be empty).
 geometry::Sample read_sample(const geometry::Local_feature_size& lfs, const std::filesystem::path& points,
                              const std::filesystem::path& edges);
 

@@ -1,7 +1,6 @@
 #include "bench/cli/tightness_command.h"
 
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -9,11 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/cli/algorithm_options.h"
-#include "bench/runner/external_algorithm.h"
+#include "bench/runner/tightness_case.h"
 #include "certify/tightness_search.h"
-#include "geometry/io/edge_io.h"
-#include "geometry/io/point_io.h"
-#include "geometry/io/svg_picture.h"
 
 namespace curvebench::cli {
 namespace {
@@ -26,54 +22,6 @@ struct Tightness_command_options {
   bool json = false;
 };
 
-// The case's files; returns its directory's JSON record.
-nlohmann::json write_case(const std::filesystem::path& directory, const algorithms::Algorithm& algorithm,
-                          const certify::Tightness_result& result) {
-  const certify::Tightness_case& c = *result.best;
-  std::filesystem::remove_all(directory);
-  std::filesystem::create_directories(directory);
-  geometry::write_points(directory / "points.xy", c.sample.points);
-  geometry::write_edges(directory / "truth.edges", geometry::canonical_edges(c.sample.edges));
-  geometry::write_edges(directory / "reconstruction.edges", c.reconstruction);
-  std::ofstream(directory / "curve.txt") << c.curve << '\n';
-
-  geometry::SvgPicture picture(c.sample.points);
-  const std::string measure(certify::measure_name(result.theorem.measure));
-  std::ostringstream title;
-  title << algorithm.name << " fails at measured " << measure << ' ' << std::setprecision(4) << c.measured
-        << " (proven bound " << result.theorem.bound << "): " << c.curve;
-  picture.set_title(title.str());
-  picture.add_edges(c.sample.edges, {.colour = "#bbbbbb", .width_px = 5, .legend = "ground truth"});
-  picture.add_edges(c.reconstruction, {.colour = "#d62728", .width_px = 1.5, .legend = std::string(algorithm.name)});
-  picture.add_points();
-  picture.write(directory / "picture.svg");
-
-  std::ofstream replay(directory / "replay.sh");
-  replay << "#!/bin/sh\n# " << algorithm.name << " does not reconstruct these " << c.sample.size()
-         << " points of " << c.curve << "\n# (measured " << measure << ' ' << std::setprecision(17) << c.measured
-         << "; proven bound " << result.theorem.bound << "). Run from this directory with curvebench on PATH.\n"
-         << "set -e\ncurvebench reconstruct " << bench::replay_arguments(algorithm)
-         << " -i points.xy -o replayed.edges --svg replayed.svg\n"
-         << "cmp replayed.edges reconstruction.edges && echo 'the same edges as found'\n"
-         << "curvebench evaluate -i points.xy -e replayed.edges -g truth.edges\n"
-         << "curvebench measure --curve " << bench::shell_quoted(c.curve) << " -i points.xy -e truth.edges --min-lfs 0\n";
-  replay.close();
-  std::filesystem::permissions(directory / "replay.sh", std::filesystem::perms::owner_exec, std::filesystem::perm_options::add);
-
-  const nlohmann::json record = {{"algorithm", algorithm.name},  {"measure", measure},
-                                 {"bound", result.theorem.bound}, {"smallest_failure", c.measured},
-                                 {"ratio", c.measured / result.theorem.bound},
-                                 {"curve", c.curve},              {"points", c.sample.size()},
-                                 {"level", c.level},              {"samples_added", c.added},
-                                 {"moves_kept", c.moved},         {"error", c.error},
-                                 {"largest_passed", result.largest_passed},
-                                 {"curves", result.curves},       {"failing_curves", result.failing_curves},
-                                 {"evaluations", result.evaluations}, {"seconds", result.seconds},
-                                 {"directory", directory.string()}};
-  std::ofstream(directory / "case.json") << record.dump(2) << '\n';
-  return record;
-}
-
 void run(const Tightness_command_options& o) {
   certify::Tightness_options search = o.search;
   search.measure = o.rho ? certify::Measure::rho : certify::Measure::epsilon;
@@ -83,11 +31,8 @@ void run(const Tightness_command_options& o) {
   for (const std::string& name : algorithm_names(o.algorithms)) {
     const algorithms::Algorithm& algorithm = chosen_algorithm(name);
     const certify::Tightness_result result = certify::search_tightness(algorithm, search);
-    nlohmann::json record = {{"algorithm", algorithm.name}, {"bound", result.theorem.bound},
-                             {"largest_passed", result.largest_passed},
-                             {"curves", result.curves},     {"failing_curves", result.failing_curves},
-                             {"evaluations", result.evaluations}, {"seconds", result.seconds}};
-    if (result.best) record = write_case(o.output / (std::string(algorithm.name) + (o.rho ? "-rho" : "")), algorithm, result);
+    const nlohmann::json record = nlohmann::json::parse(
+        bench::tightness_record_json(algorithm, result, o.output / (std::string(algorithm.name) + (o.rho ? "-rho" : ""))));
     records.push_back(record);
     if (o.json) continue;
     std::cout << std::left << std::setw(21) << algorithm.name << std::setw(9) << certify::measure_name(search.measure)

@@ -6,6 +6,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "bench/runner/bench_input.h"
 #include "bench/runner/external_algorithm.h"
 #include "bench/runner/results_table.h"
@@ -217,6 +219,30 @@ Certify_summary certify_algorithm(const algorithms::Algorithm& algorithm, const 
     }
   }
   return summary;
+}
+
+std::string certify_summary_json(const Certify_summary& s, const Certify_options& options) {
+  const std::string measure(certify::measure_name(s.measure));
+  nlohmann::json counterexamples = nlohmann::json::array();
+  for (const Counterexample& c : s.counterexamples)
+    counterexamples.push_back({{"input", c.input}, {"points", c.points}, {measure, c.measured},
+                               {"path", c.directory.string()}, {"replay", (c.directory / "replay.sh").string()}});
+  const nlohmann::json summary = {
+      {"algorithm", s.algorithm},
+      {"bound", s.bound},
+      {"measure", measure},
+      {"requested_level", s.requested_level},
+      {"curves", options.curves},
+      {"seed", options.seed},
+      {"cases", s.cases},
+      {"passed", s.passed},
+      {"failures", s.failures},
+      {"inconclusive", s.inconclusive},
+      {"hypothesis_violations", s.hypothesis_violations},
+      {"counterexamples", counterexamples},
+      {"results", (options.run.output / "results.csv").string()},
+  };
+  return summary.dump(2);
 }
 
 }  // namespace curvebench::bench

@@ -82,4 +82,10 @@ std::vector<Suite_case> certification_cases(const Certify_options& options, cons
 // Writes options.run.output anew unless options.run.resume.
 Certify_summary certify_algorithm(const algorithms::Algorithm& algorithm, const Certify_options& options);
 
+// The summary as `curvebench certify --json` prints it: algorithm, bound, measure,
+// requested_level, curves, seed, cases, passed, failures, inconclusive,
+// hypothesis_violations, counterexamples (each: input, points, the measure's value, path,
+// replay) and results (options.run.output's results.csv).
+std::string certify_summary_json(const Certify_summary& summary, const Certify_options& options);
+
 }  // namespace curvebench::bench

@@ -1,5 +1,6 @@
 #include "bench/runner/hunt.h"
 
+#include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 
 #include <algorithm>
@@ -446,7 +447,24 @@ Hunt_summary hunt(const Hunt_options& options) {
     if (!options.output.empty()) write_finding(finding, *defect, made_case, *algorithm, options, number);
     summary.findings.push_back(std::move(finding));
   }
+  summary.seconds = elapsed();
   return summary;
+}
+
+std::string hunt_summary_json(const Hunt_summary& summary, const Hunt_options& options) {
+  nlohmann::json findings = nlohmann::json::array();
+  for (const Hunt_finding& f : summary.findings) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const auto& p : f.points) points.push_back({p.x(), p.y()});
+    findings.push_back({{"kind", f.kind},
+                        {"message", f.message},
+                        {"points", points},
+                        {"shrink_steps", f.shrink_steps},
+                        {"replay", f.directory.empty() ? nlohmann::json() : nlohmann::json((f.directory / "replay.sh").string())}});
+  }
+  return nlohmann::json{{"algorithm", options.algorithm}, {"seed", options.seed}, {"cases", summary.cases},
+                        {"seconds", summary.seconds}, {"findings", findings}}
+      .dump(2);
 }
 
 }  // namespace curvebench::bench

@@ -68,9 +68,15 @@ struct Hunt_finding {
 struct Hunt_summary {
   std::size_t cases = 0;  // inputs tried, shrinking not counted
   std::vector<Hunt_finding> findings;  // in the order found, at most max_findings per kind
+  double seconds = 0;                  // the hunt's wall time, shrinking included
 };
 
 // Throws std::invalid_argument for an unknown algorithm or a bad exec: declaration.
 Hunt_summary hunt(const Hunt_options& options);
+
+// The summary as `curvebench hunt --json` prints it: algorithm, seed, cases, seconds and
+// findings (each: kind, message, points as [x, y] pairs, shrink_steps, replay: the path of
+// its replay.sh, or null when none was written).
+std::string hunt_summary_json(const Hunt_summary& summary, const Hunt_options& options);
 
 }  // namespace curvebench::bench
