@@ -32,6 +32,28 @@ Fork_hooks& hooks() {
   return hooks;
 }
 
+std::function<void()>& interruption_check() {
+  static std::function<void()> check;
+  return check;
+}
+
+// The longest wait between two interruption checks.
+constexpr int check_interval_ms = 100;
+
+// Kills and reaps the children still running when run_in_processes leaves by an exception
+// (an interruption, a failed fork, a `done` that threw), so that none works on unseen.
+struct Reaper {
+  std::vector<Child>& running;
+  ~Reaper() {
+    for (const Child& child : running) {
+      kill(child.pid, SIGKILL);
+      close(child.pipe);
+      while (waitpid(child.pid, nullptr, 0) < 0 && errno == EINTR) {
+      }
+    }
+  }
+};
+
 [[noreturn]] void run_child(std::size_t task, int pipe, const Process_pool_options& options,
                             const std::function<std::string(std::size_t)>& run) {
   if (options.memory_limit_bytes > 0) {
@@ -67,10 +89,16 @@ std::string time_limit_text(double seconds) {
 
 Fork_hooks set_fork_hooks(Fork_hooks replacement) { return std::exchange(hooks(), std::move(replacement)); }
 
+std::function<void()> set_interruption_check(std::function<void()> check) {
+  return std::exchange(interruption_check(), std::move(check));
+}
+
 void run_in_processes(std::size_t count, const Process_pool_options& options,
                       const std::function<std::string(std::size_t)>& task,
                       const std::function<void(std::size_t, Task_outcome)>& done) {
   std::vector<Child> running;
+  const Reaper reaper{running};
+  const std::function<void()>& check = interruption_check();
   std::size_t next = 0;
   const auto timeout = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.timeout_seconds));
   const auto finish = [&](std::size_t k, Task_outcome outcome) {
@@ -100,7 +128,10 @@ void run_in_processes(std::size_t count, const Process_pool_options& options,
       const pid_t pid = fork();
       const int fork_error = errno;
       if (pid != 0 && around.after_parent) around.after_parent();
-      if (pid < 0) throw std::system_error(fork_error, std::generic_category(), "fork");
+      if (pid < 0) {
+        close(fds[0]), close(fds[1]);
+        throw std::system_error(fork_error, std::generic_category(), "fork");
+      }
       if (pid == 0) {
         if (around.after_child) around.after_child();
         close(fds[0]);
@@ -117,12 +148,14 @@ void run_in_processes(std::size_t count, const Process_pool_options& options,
       polled.push_back({child.pipe, POLLIN, 0});
       wait = std::min(wait, child.deadline - Clock::now());
     }
-    const int wait_ms = wait == Clock::duration::max()
-                            ? -1
-                            : static_cast<int>(std::max<long long>(
-                                  0, std::chrono::duration_cast<std::chrono::milliseconds>(wait).count() + 1));
+    int wait_ms = wait == Clock::duration::max()
+                      ? -1
+                      : static_cast<int>(std::max<long long>(
+                            0, std::chrono::duration_cast<std::chrono::milliseconds>(wait).count() + 1));
+    if (check && (wait_ms < 0 || wait_ms > check_interval_ms)) wait_ms = check_interval_ms;
     if (poll(polled.data(), polled.size(), wait_ms) < 0 && errno != EINTR)
       throw std::system_error(errno, std::generic_category(), "poll");
+    if (check) check();  // an interrupt seen by poll (EINTR) is seen here at once
 
     // Backwards, so that finishing a child does not move the ones still to look at.
     for (std::size_t k = running.size(); k-- > 0;) {

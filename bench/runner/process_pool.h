@@ -46,8 +46,17 @@ struct Fork_hooks {
 // programs that exec: algorithms start, which exec at once); returns the hooks it replaces.
 Fork_hooks set_fork_hooks(Fork_hooks hooks);
 
+// Makes `check` the interruption check of every later run_in_processes in this process
+// (an empty function: none); returns the check it replaces. The check is called in the
+// parent at least every 100 ms while tasks run; an exception it throws ends
+// run_in_processes: for a host that must see its user's interrupt (python/ raises
+// KeyboardInterrupt on Ctrl-C).
+std::function<void()> set_interruption_check(std::function<void()> check);
+
 // Runs task(0) ... task(count - 1); calls done(i, outcome) in the parent as each ends, in
-// the order they end. Throws std::system_error if a pipe or process cannot be made.
+// the order they end. Throws std::system_error if a pipe or process cannot be made, and
+// passes on what the interruption check or `done` throws; when it throws, the children
+// still running are killed and reaped first, so that none works on unseen.
 void run_in_processes(std::size_t count, const Process_pool_options& options,
                       const std::function<std::string(std::size_t)>& task,
                       const std::function<void(std::size_t, Task_outcome)>& done);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -57,6 +58,29 @@ TEST(ProcessPool, ForkHooksRunAroundEachFork) {
       [&](std::size_t i, Task_outcome outcome) { outputs[i] = outcome.output; });
   EXPECT_EQ(outputs[0], "plain");
   EXPECT_EQ(before, 5);
+}
+
+// An interruption (python/'s Ctrl-C) ends the run at once: the check's exception passes on,
+// and no child is left running (none is left to wait for).
+TEST(ProcessPool, AnInterruptionEndsTheRunAndReapsItsChildren) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::function<void()> previous = set_interruption_check([&] {
+    if (std::chrono::steady_clock::now() - start > std::chrono::milliseconds(300)) throw std::runtime_error("interrupted");
+  });
+  std::size_t done = 0;
+  EXPECT_THROW(run_in_processes(
+                   4, {.workers = 2},
+                   [](std::size_t) {
+                     std::this_thread::sleep_for(std::chrono::seconds(30));
+                     return std::string("slept");
+                   },
+                   [&](std::size_t, Task_outcome) { ++done; }),
+               std::runtime_error);
+  set_interruption_check(previous);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_EQ(done, 0u);
+  EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);  // no child at all, running or unreaped
+  EXPECT_EQ(errno, ECHILD);
 }
 
 TEST(ProcessPool, ACrashOrAHangCostsOnlyItsOwnTask) {
