@@ -7,6 +7,8 @@
 #   lib/cmake/curvebench/                  curvebenchConfig.cmake, its version and targets,
 #                                          curvebench_add_program (curvebenchProgram.cmake)
 #   share/curvebench/data, bench/report    the bundled data and the report's scripts
+#   lib/python3/dist-packages/curvebench   the Python module, when it is built (its own
+#                                          install rules: python/CMakeLists.txt)
 include(CMakePackageConfigHelpers)
 
 # The layers' libraries, exported as curvebench::NAME for curvebench_NAME.
@@ -74,6 +76,14 @@ set(CPACK_DEBIAN_PACKAGE_MAINTAINER "curvebench developers")
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
     "libcgal-dev, libgmp-dev, libmpfr-dev, libboost-graph-dev, libtbb-dev, libfreetype-dev, fonts-dejavu-core, libcli11-dev, nlohmann-json3-dev, librapidcheck-dev, python3, python3-matplotlib, cmake")
+if(CURVEBENCH_PYTHON_MODULE)  # the module is built for this python3's minor version and imports numpy
+  math(EXPR curvebench_python_next_minor "${Python3_VERSION_MINOR} + 1")
+  string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS ", python3-numpy, python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}), "
+                                             "python3 (<< ${Python3_VERSION_MAJOR}.${curvebench_python_next_minor})")
+endif()
 # The benchmark program needs Google Benchmark; the fuzz target, clang's libFuzzer.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libbenchmark-dev, clang-14, libclang-rt-14-dev")
+if(CURVEBENCH_PYTHON_MODULE)  # curvebench.run() gives DataFrames
+  string(APPEND CPACK_DEBIAN_PACKAGE_RECOMMENDS ", python3-pandas")
+endif()
 include(CPack)
