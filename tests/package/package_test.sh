@@ -7,8 +7,9 @@
 #     `run smoke`, `certify --count 50`, `hunt --seconds 10`, its benchmark and its fuzz
 #     target; its rows equal those of the same algorithm behind `exec:`, runtimes aside.
 #   package_test.sh deb BUILD SOURCE
-#     cpack -G DEB; the package unpacked with dpkg-deb -x; its `curvebench list` runs and
-#     the example configures and builds against the unpacked tree.
+#     cpack -G DEB; the package unpacked with dpkg-deb -x; its `curvebench list` runs, its
+#     Python module (when built) imports, and the example configures and builds against
+#     the unpacked tree.
 set -uo pipefail
 mode="$1" build="$2" source="$3"
 python=/usr/bin/python3
@@ -112,6 +113,15 @@ if [[ $mode == deb ]]; then
   check "the unpacked curvebench reads its own bundled data and report scripts" sh -c "
     '$root/usr/bin/curvebench' list data | grep -qxF 'data: $root/usr/share/curvebench/data' &&
     '$root/usr/bin/curvebench' run smoke -a nn-crust -q -o '$work/smoke' >/dev/null && test -s '$work/smoke/report.html'"
+  if ls "$build"/python/curvebench/_curvebench*.so >/dev/null 2>&1; then  # the Python module was built
+    check "its Python module imports from the unpacked /usr/lib/python3/dist-packages, with the package's data" \
+      env -u CURVEBENCH_ROOT PYTHONPATH="$root/usr/lib/python3/dist-packages" "$python" -c "
+import os, curvebench
+assert curvebench.__file__.startswith('$root/usr/lib/python3/dist-packages/'), curvebench.__file__
+assert os.path.realpath(curvebench._core.resource_root()) == os.path.realpath('$root/usr/share/curvebench')
+assert (curvebench.run('smoke', ['nn-crust']).results.status == 'ok').all()"
+    check "its Depends names python3-numpy" sh -c "dpkg-deb -f '$deb' Depends | grep -q python3-numpy"
+  fi
   check "the example configures and builds against the unpacked tree" build_example "$root/usr" "$work/example" my-curvebench
   check "and against the package alone" built_from_package_only "$work/example"
   check "its program lists the registered algorithm" sh -c "'$work/example/my-curvebench' list algorithms | grep -q '^naive-nn-crust '"
