@@ -19,6 +19,8 @@ test_packages=(
   clang-14 libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   python3-scipy
+  # the Python module (python/, docs/python.md) and its tests
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pandas python3-pytest python3-hypothesis
   doxygen  # the API reference (`docs` target), which the ctest api_reference builds
   slurm-wlm munge  # tests/cli/curvebench_slurm_test.sh starts a one-node Slurm cluster of its own
 )
