@@ -26,6 +26,7 @@ from ._algorithms import Algorithm, algorithm
 from ._curvebench import InvalidOutput, Reconstruction, UnknownNameError
 from ._experiments import RunResult
 
+__version__ = _paths.version
 __all__ = [
     "Algorithm", "InvalidOutput", "Reconstruction", "RunResult", "Sample", "UnknownNameError",
     "algorithm", "algorithms", "certify", "evaluate", "graph", "graph_kinds", "hunt", "load_algorithm_file",

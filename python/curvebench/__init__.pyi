@@ -6,6 +6,8 @@ from typing import Any, Callable, Iterator, Literal, Mapping, NamedTuple, Option
 import numpy as np
 import numpy.typing as npt
 
+__version__: str
+
 # An (n, 2) array-like of real coordinates; an (n, 2) float64 C-contiguous array is read in place.
 PointsLike = npt.ArrayLike
 # An (m, 2) array-like of integer indices.

@@ -91,8 +91,8 @@ def test_the_gil_is_released_while_the_cpp_runs():
         stop.set()
         thread.join()
     assert result.runtime > 0.05
-    # A thread that only ran between GIL hand-offs would tick a few times per 5 ms switch interval.
-    assert during > 1000 * result.runtime
+    # Held, the GIL would let the thread tick only around the call: a few times at most.
+    assert during > 100
 
 
 def test_bad_input_raises_the_command_lines_messages(cli, tmp_path):
