@@ -225,9 +225,10 @@ def run(suite, algorithms=None, out=None, *, jobs=0, timeout=60.0, pictures=None
     "K/N"; ``resume``: continue an interrupted run in ``out``.
 
     Returns ``results`` (a pandas DataFrame: results.csv's rows and columns), ``summary``
-    (summary.csv: per suite, level and algorithm the exact and true-topology shares with
-    their Wilson 95 % intervals, RMS and Hausdorff means with their Student-t 95 %
-    intervals, mean runtime), ``counts`` (jobs by status) and ``directory``.
+    (summary.csv, made by the report's code: per suite, level and algorithm the exact and
+    true-topology shares with their Wilson 95 % intervals, RMS and Hausdorff means with their
+    Student-t 95 % intervals, mean runtime; None, with a warning, where that code cannot run),
+    ``counts`` (jobs by status) and ``directory``.
 
     >>> r = curvebench.run("sampling", ["nn-crust", my_function])
     >>> r.results.groupby("algorithm").exact.mean()
@@ -248,7 +249,8 @@ def certify(algorithm, *, curves="fourier", count=100, rho=False, epsilon=None, 
     inconclusive, hypothesis_violations and counterexamples: the first five failures,
     shrunk, each with its input (the input name that makes it again), points (their count),
     the measured value, ``sample`` (``points`` and ``truth``, the ground-truth edges, as
-    arrays) and, with ``out``, the path of its directory and replay.sh.
+    arrays) and, with ``out``, the path of its directory and replay.sh. ``out`` is written
+    anew unless ``resume``, as the command does.
     """
     return _experiments.certify(algorithm, curves=curves, count=count, rho=rho, epsilon=epsilon,
                                 below_bound=below_bound, seed=seed, out=out, jobs=jobs, timeout=timeout,

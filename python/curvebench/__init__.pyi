@@ -63,7 +63,7 @@ class Sample:
 class RunResult(NamedTuple):
     """What run() gives."""
     results: Any  # pandas.DataFrame
-    summary: Any  # pandas.DataFrame
+    summary: Any  # pandas.DataFrame, or None where the report's code cannot run
     counts: dict[str, int]
     directory: Optional[pathlib.Path]
 
