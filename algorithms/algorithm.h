@@ -82,6 +82,11 @@ struct Algorithm {
   Capabilities capabilities;          // its row of Table 1
   Sampling_condition condition;       // its proven sampling condition, if any
   Reconstruct reconstruct;            // the bare call: registry.h's reconstruct() checks and merges first
+  // True for a method that simplifies rather than interpolates (Optimal Transport): its
+  // output vertices are a subset of the input, so the survey scores it apart ("Comparison
+  // and Evaluation": "we have not included it in any of our experiments"), and so does
+  // the report, by distance and topology instead of exactness.
+  bool simplifies = false;
   // False where the same input may give different output between runs: Optimal
   // Transport, whose CGAL implementation breaks cost ties by memory address.
   bool repeatable = true;

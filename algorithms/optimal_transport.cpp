@@ -127,6 +127,7 @@ Algorithm optimal_transport_algorithm() {
                      .tolerance = values[tolerance],
                      .relocation = static_cast<unsigned>(values[relocation])});
       },
+      .simplifies = true,
       .repeatable = false,
   };
 }
