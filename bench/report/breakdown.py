@@ -5,7 +5,7 @@ algorithm's proven bound; this measures where it actually stops working).
 The rate is fitted as a logistic function of the logarithm of the measured epsilon (epsilon is a
 scale: the same step from 0.1 to 0.2 as from 1 to 2) by maximum likelihood, and the breakdown at q
 is where the fit crosses q. Its 95 % interval is the percentile bootstrap over
-cases (whole cases resampled with a fixed seed, so that a report is repeatable), which is
+cases (whole cases resampled with a fixed seed, so that a report is reproducible), which is
 consistent for a smooth maximum-likelihood estimate.
 Why not a shape-free fit: the isotonic (non-increasing) regression was tried first, but its
 bootstrap is known to be inconsistent (cube-root asymptotics), and on simulated data its 95 %
