@@ -102,6 +102,21 @@ Curve_distance curve_distance(const Polyline_view& original, const Polyline_view
   return {hausdorff, std::min(hausdorff, scale * std::sqrt(sum / weight))};  // min: rounding
 }
 
+Curve_distance one_way_curve_distance(const Polyline_view& from, const Polyline_view& to, double spacing) {
+  if (from.edges.empty()) return {};
+  if (to.edges.empty()) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  require_finite_extent(from, to);
+  const Nearest_segment_index index(to.points, to.edges);
+  const One_way mapped = map_onto(from, index, spacing);
+  if (mapped.weight > 0)
+    return {mapped.largest, std::min(mapped.largest, mapped.squares.scale * std::sqrt(mapped.squares.sum / mapped.weight))};
+  // Points only (a simplifier that kept isolated vertices alone): each weighs the same.
+  Weighted_squares squares;
+  for (const auto& [i, j] : from.edges) squares.add(std::sqrt(index.nearest(from.points[i])->squared_distance), 1);
+  const double rms = squares.scale * std::sqrt(squares.sum / static_cast<double>(from.edges.size()));
+  return {mapped.largest, std::min(mapped.largest, rms)};
+}
+
 double normal_deviation_degrees(const Polyline_view& original, const Polyline_view& reconstruction) {
   if (original.edges.empty()) return std::numeric_limits<double>::quiet_NaN();
   const Nearest_segment_index index(original.points, original.edges);

@@ -39,6 +39,17 @@ struct Curve_distance {
 // `spacing` > 0 (a length); the default used by the benchmark is 1e-3 of the bounding-box
 // diagonal of `original` (default_distance_spacing).
 Curve_distance curve_distance(const Polyline_view& original, const Polyline_view& reconstruction, double spacing);
+
+// One direction of the same mapping: the largest distance from a sample of `from` to its
+// closest point on `to` (the directed Hausdorff distance) and the arc-length RMS of that
+// distance over `from`. A simplifier's output (Optimal Transport) is measured both ways
+// with it, since a few vertices far from the curve and a curve far from every vertex are
+// different faults. An edge whose ends coincide is a point of its curve (an isolated
+// vertex): it counts in the Hausdorff distance either way but weighs nothing in the RMS
+// beside edges of positive length; if `from` has no length at all, its points weigh
+// equally. 0 and 0 if `from` has no edge (nothing of it is far), else +infinity for both
+// if `to` has none. Throws as curve_distance does.
+Curve_distance one_way_curve_distance(const Polyline_view& from, const Polyline_view& to, double spacing);
 // 1e-3 of the bounding-box diagonal of `original`'s points, or 1 if that is 0 or infinite.
 double default_distance_spacing(const Polyline_view& original);
 

@@ -92,6 +92,80 @@ TEST(CurveDistance, ADegenerateEdgeIsAPoint) {
   EXPECT_NEAR(distance.rms, std::sqrt(squares / 100), 1e-9);
 }
 
+// A regular polygon of n sides inscribed in the circle of radius r about the origin, a
+// corner at angle 0: for n divisible by 4, corners on both axes.
+Polyline circle_polygon(double r, int n) {
+  std::vector<Point> corners;
+  for (int i = 0; i < n; ++i)
+    corners.emplace_back(r * std::cos(2 * std::numbers::pi * i / n), r * std::sin(2 * std::numbers::pi * i / n));
+  return polygon(corners);
+}
+
+// Points as a simplifier's isolated output vertices: each an edge whose ends coincide.
+Polyline isolated_points(std::vector<Point> points) {
+  Polyline p{std::move(points), {}};
+  for (std::size_t i = 0; i < p.points.size(); ++i) p.edges.emplace_back(i, i);
+  return p;
+}
+
+// [0, 1] lies on [0, 2]; the other way, x in [1, 2] is x - 1 away: H = 1 and
+// RMS^2 = (1 / 2) * integral of (x - 1)^2 over [1, 2] = 1 / 6.
+TEST(OneWayCurveDistance, ASegmentAndOneTwiceAsLongDifferByDirection) {
+  const Polyline shorter{{{0, 0}, {1, 0}}, {{0, 1}}}, longer{{{0, 0}, {2, 0}}, {{0, 1}}};
+  const Curve_distance in = one_way_curve_distance(shorter.view(), longer.view(), spacing_of(longer));
+  EXPECT_EQ(in.hausdorff, 0);
+  EXPECT_EQ(in.rms, 0);
+  const Curve_distance out = one_way_curve_distance(longer.view(), shorter.view(), spacing_of(longer));
+  EXPECT_NEAR(out.hausdorff, 1, 1e-12);
+  EXPECT_NEAR(out.rms, std::sqrt(1.0 / 6), 1e-6);
+}
+
+// The unit circle against its four points on the axes, as isolated vertices: a point of
+// the circle at angle t in [0, pi/4] is 2 sin(t/2) from (1, 0), so H = 2 sin(pi/8) and
+// RMS^2 = (4 / pi) * integral over [0, pi/4] of 4 sin^2(t/2) dt = 2 - 4 sqrt(2) / pi.
+// The points lie on the curve: 0 the other way.
+TEST(OneWayCurveDistance, TheCircleAgainstFourOfItsPoints) {
+  const Polyline circle = circle_polygon(1, 4000), points = isolated_points({{1, 0}, {0, 1}, {-1, 0}, {0, -1}});
+  const Curve_distance from_curve = one_way_curve_distance(circle.view(), points.view(), 1e-3);
+  EXPECT_NEAR(from_curve.hausdorff, 2 * std::sin(std::numbers::pi / 8), 1e-9);
+  EXPECT_NEAR(from_curve.rms, std::sqrt(2 - 4 * std::sqrt(2.0) / std::numbers::pi), 1e-5);
+  const Curve_distance to_curve = one_way_curve_distance(points.view(), circle.view(), 1e-3);
+  EXPECT_NEAR(to_curve.hausdorff, 0, 1e-12);
+  EXPECT_NEAR(to_curve.rms, 0, 1e-12);
+}
+
+// A vertex at the centre and an edge on the circle: the vertex is 1 from the curve (up to the
+// polygon's sagitta, 3.1e-7), which its Hausdorff distance says and the RMS, weighted by
+// length, does not; alone, the vertex is the whole RMS.
+TEST(OneWayCurveDistance, AnIsolatedVertexCountsInHausdorffAndWeighsNothingBesideEdges) {
+  const Polyline circle = circle_polygon(1, 4000);
+  Polyline output = isolated_points({{0, 0}});
+  output.points.insert(output.points.end(), {circle.points[0], circle.points[1]});
+  output.edges.emplace_back(1, 2);
+  const Curve_distance mixed = one_way_curve_distance(output.view(), circle.view(), 1e-4);
+  EXPECT_NEAR(mixed.hausdorff, 1, 1e-6);
+  EXPECT_NEAR(mixed.rms, 0, 1e-12);
+  const Curve_distance alone = one_way_curve_distance(isolated_points({{0, 0}}).view(), circle.view(), 1e-3);
+  EXPECT_NEAR(alone.hausdorff, 1, 1e-6);
+  EXPECT_NEAR(alone.rms, 1, 1e-6);
+  // Points without length weigh the same: one on the circle, one at its centre.
+  const Curve_distance two = one_way_curve_distance(isolated_points({{1, 0}, {0, 0}}).view(), circle.view(), 1e-3);
+  EXPECT_NEAR(two.hausdorff, 1, 1e-6);
+  EXPECT_NEAR(two.rms, std::sqrt(0.5), 1e-6);
+  // The circle is 1 from the centre everywhere.
+  const Curve_distance back = one_way_curve_distance(circle.view(), isolated_points({{0, 0}}).view(), 1e-3);
+  EXPECT_NEAR(back.hausdorff, 1, 1e-12);
+  EXPECT_NEAR(back.rms, 1, 1e-6);
+}
+
+TEST(OneWayCurveDistance, NothingToMapIsZeroAndNothingToMapOntoIsInfinite) {
+  const Polyline a = square(0, 0), none;
+  EXPECT_EQ(one_way_curve_distance(none.view(), a.view(), 1).hausdorff, 0);
+  EXPECT_EQ(one_way_curve_distance(none.view(), none.view(), 1).rms, 0);
+  EXPECT_EQ(one_way_curve_distance(a.view(), none.view(), 1).hausdorff, infinity);
+  EXPECT_EQ(one_way_curve_distance(a.view(), none.view(), 1).rms, infinity);
+}
+
 TEST(NormalDeviation, IsTheAngleBetweenTheLines) {
   const Polyline original{{{-10, 0}, {10, 0}}, {{0, 1}}};
   for (const double degrees : {0.0, 30.0, 90.0, 150.0}) {
@@ -144,30 +218,57 @@ RC_GTEST_PROP(NearestSegmentIndex, IsTheClosestOfAllSegments, ()) {
 // against every segment. The distance to the other curve is 1-Lipschitz along a curve, so
 // the tested value lies within half a sample step of the true one either way: the fine
 // oracle's step is a tenth of the spacing.
+double brute_force_one_way(const Polyline& from, const Polyline& to, double spacing) {
+  double largest = 0;
+  for (const auto& [i, j] : from.edges) {
+    const Point &p = from.points[i], &q = from.points[j];
+    const int steps = 10 * static_cast<int>(std::ceil(std::sqrt(CGAL::squared_distance(p, q)) / spacing)) + 1;
+    for (int k = 0; k <= steps; ++k) {
+      const double t = static_cast<double>(k) / steps;
+      const Point s(p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y()));
+      double nearest = infinity;
+      for (const auto& [u, v] : to.edges) nearest = std::min(nearest, squared_distance_to_segment(s, to.points[u], to.points[v]));
+      largest = std::max(largest, std::sqrt(nearest));
+    }
+  }
+  return largest;
+}
+
 RC_GTEST_PROP(CurveDistance, HausdorffMatchesAFineBruteForce, ()) {
   const Polyline a = *segment_soups(), b = *segment_soups();
   const double spacing = 0.05 * std::max(spacing_of(a), spacing_of(b)) * 1000;
-  const auto one_way = [&](const Polyline& from, const Polyline& to) {
-    double largest = 0;
-    for (const auto& [i, j] : from.edges) {
-      const Point &p = from.points[i], &q = from.points[j];
-      const int steps = 10 * static_cast<int>(std::ceil(std::sqrt(CGAL::squared_distance(p, q)) / spacing)) + 1;
-      for (int k = 0; k <= steps; ++k) {
-        const double t = static_cast<double>(k) / steps;
-        const Point s(p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y()));
-        double nearest = infinity;
-        for (const auto& [u, v] : to.edges) nearest = std::min(nearest, squared_distance_to_segment(s, to.points[u], to.points[v]));
-        largest = std::max(largest, std::sqrt(nearest));
-      }
-    }
-    return largest;
-  };
-  const double oracle = std::max(one_way(a, b), one_way(b, a));
+  const double oracle = std::max(brute_force_one_way(a, b, spacing), brute_force_one_way(b, a, spacing));
   const Curve_distance tested = curve_distance(a.view(), b.view(), spacing);
   RC_ASSERT(tested.hausdorff <= oracle * (1 + 1e-9) + spacing / 10);
   RC_ASSERT(tested.hausdorff >= oracle - spacing);
   RC_ASSERT(tested.rms <= tested.hausdorff * (1 + 1e-12) + 1e-300);
   RC_ASSERT(curve_distance(b.view(), a.view(), spacing).hausdorff == tested.hausdorff);
+}
+
+// Each direction against the same oracle, and the two directions against the symmetric
+// distance: its Hausdorff is the larger, its RMS the length-weighted mean of their squares.
+RC_GTEST_PROP(OneWayCurveDistance, MatchesAFineBruteForceAndMakesUpTheSymmetricDistance, ()) {
+  const Polyline a = *segment_soups(), b = *segment_soups();
+  const double spacing = 0.05 * std::max(spacing_of(a), spacing_of(b)) * 1000;
+  const Curve_distance ab = one_way_curve_distance(a.view(), b.view(), spacing);
+  const Curve_distance ba = one_way_curve_distance(b.view(), a.view(), spacing);
+  for (const auto& [tested, oracle] : {std::pair(ab.hausdorff, brute_force_one_way(a, b, spacing)),
+                                       std::pair(ba.hausdorff, brute_force_one_way(b, a, spacing))}) {
+    RC_ASSERT(tested <= oracle * (1 + 1e-9) + spacing / 10);
+    RC_ASSERT(tested >= oracle - spacing);
+  }
+  const Curve_distance both = curve_distance(a.view(), b.view(), spacing);
+  RC_ASSERT(both.hausdorff == std::max(ab.hausdorff, ba.hausdorff));
+  const auto length = [](const Polyline& p) {
+    double sum = 0;
+    for (const auto& [i, j] : p.edges) sum += std::sqrt(CGAL::squared_distance(p.points[i], p.points[j]));
+    return sum;
+  };
+  const double la = length(a), lb = length(b);
+  if (la > 0 && lb > 0) {
+    const double mean_square = (ab.rms * ab.rms * la + ba.rms * ba.rms * lb) / (la + lb);
+    RC_ASSERT(std::abs(both.rms - std::sqrt(mean_square)) <= 1e-9 * both.hausdorff + 1e-300);
+  }
 }
 
 // Components and degrees by breadth-first search, written independently.
