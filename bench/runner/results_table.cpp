@@ -14,17 +14,19 @@ namespace {
 constexpr std::string_view names[column_count] = {
     "job",        "suite",      "input",           "level",           "algorithm",       "params",
     "n_points",   "epsilon",    "rho",             "uniformity",      "status",          "exact",           "hausdorff",
-    "rms",        "normal_deviation", "manifold", "components",      "open_components", "closed_components",
-    "unconnected", "true_topology", "runtime_ms", "startup_ms", "picture", "message"};
+    "rms",        "hausdorff_to_curve", "rms_to_curve", "hausdorff_from_curve", "rms_from_curve",
+    "normal_deviation", "manifold", "components",      "open_components", "closed_components",
+    "unconnected", "output_points", "true_topology", "runtime_ms", "startup_ms", "picture", "message"};
 
 enum class Kind { integer, real, boolean, text };
 
 Kind kind_of(std::size_t column) {
   switch (static_cast<Column>(column)) {
     case Column::job: case Column::n_points: case Column::components: case Column::open_components:
-    case Column::closed_components: case Column::unconnected:
+    case Column::closed_components: case Column::unconnected: case Column::output_points:
       return Kind::integer;
     case Column::epsilon: case Column::rho: case Column::uniformity: case Column::hausdorff: case Column::rms: case Column::normal_deviation:
+    case Column::hausdorff_to_curve: case Column::rms_to_curve: case Column::hausdorff_from_curve: case Column::rms_from_curve:
     case Column::runtime_ms: case Column::startup_ms:
       return Kind::real;
     case Column::exact: case Column::manifold: case Column::true_topology:

@@ -16,8 +16,9 @@ namespace curvebench::bench {
 
 // The columns of results.csv, in order; column_names() gives their header names.
 enum class Column {
-  job, suite, input, level, algorithm, params, n_points, epsilon, rho, uniformity, status, exact, hausdorff, rms, normal_deviation,
-  manifold, components, open_components, closed_components, unconnected, true_topology, runtime_ms, startup_ms, picture, message,
+  job, suite, input, level, algorithm, params, n_points, epsilon, rho, uniformity, status, exact, hausdorff, rms,
+  hausdorff_to_curve, rms_to_curve, hausdorff_from_curve, rms_from_curve, normal_deviation, manifold, components,
+  open_components, closed_components, unconnected, output_points, true_topology, runtime_ms, startup_ms, picture, message,
 };
 // The number of columns.
 inline constexpr std::size_t column_count = static_cast<std::size_t>(Column::message) + 1;

@@ -74,7 +74,8 @@ void write_picture(const std::filesystem::path& file, const Bench_input& input, 
                    std::string_view algorithm) {
   geometry::SvgPicture picture(points);
   std::string title = std::string(algorithm) + " on " + input.name + ": " + std::to_string(points.size()) + " points";
-  if (evaluation.exact) title += *evaluation.exact ? ", exact" : ", NOT exact";
+  // A simplifier's output (the only one measured each way) is never the input's edge set: no verdict.
+  if (evaluation.exact && !evaluation.to_curve) title += *evaluation.exact ? ", exact" : ", NOT exact";
   if (evaluation.rms && evaluation.diagonal > 0)
     title += ", RMS " + format_number(*evaluation.rms / *evaluation.diagonal) + " x diagonal";
   picture.set_title(title);
@@ -118,8 +119,8 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
     const geometry::Polyline_view truth{input.points, input.truth ? std::span<const Edge>(*input.truth) : std::span<const Edge>()};
     const std::optional<geometry::Polyline_view> curve =
         input.curve ? std::optional(input.curve->view()) : std::nullopt;
-    const Evaluation evaluation =
-        evaluate(reconstruction, on_input_points, input.truth ? &truth : nullptr, curve ? &*curve : nullptr);
+    const Evaluation evaluation = evaluate(reconstruction, on_input_points, input.truth ? &truth : nullptr,
+                                           curve ? &*curve : nullptr, job.algorithm->simplifies);
 
     row[Column::status] = "ok";
     row[Column::runtime_ms] = format_number(elapsed.count());
@@ -130,6 +131,14 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
     const double unit = evaluation.diagonal > 0 ? *evaluation.diagonal : 1;
     if (evaluation.hausdorff) row[Column::hausdorff] = format_number(*evaluation.hausdorff / unit);
     if (evaluation.rms) row[Column::rms] = format_number(*evaluation.rms / unit);
+    if (evaluation.to_curve) {
+      row[Column::hausdorff_to_curve] = format_number(evaluation.to_curve->hausdorff / unit);
+      row[Column::rms_to_curve] = format_number(evaluation.to_curve->rms / unit);
+    }
+    if (evaluation.from_curve) {
+      row[Column::hausdorff_from_curve] = format_number(evaluation.from_curve->hausdorff / unit);
+      row[Column::rms_from_curve] = format_number(evaluation.from_curve->rms / unit);
+    }
     if (evaluation.normal_deviation) row[Column::normal_deviation] = format_number(*evaluation.normal_deviation);
     const geometry::Curve_topology& t = evaluation.topology;
     row[Column::manifold] = t.manifold ? "1" : "0";
@@ -137,6 +146,7 @@ std::string run_job(const Job& job, const Suite_case& c, const Bench_input& inpu
     row[Column::open_components] = std::to_string(t.open_components);
     row[Column::closed_components] = std::to_string(t.closed_components);
     row[Column::unconnected] = std::to_string(t.unconnected);
+    row[Column::output_points] = std::to_string(points.size());
     // The survey's question for noisy input: one manifold curve per true curve, closed
     // where the truth is closed, whatever the points (denoising algorithms drop some).
     if (input.truth) {
@@ -206,6 +216,18 @@ class Progress {
   Clock::time_point start_ = Clock::now(), shown_{};
 };
 
+// DIR/algorithms.csv: what the report needs to know of an algorithm beyond its rows. A
+// simplifier (Optimal Transport) is scored apart there, by distances both ways, topology and
+// size instead of exactness, as the survey leaves it out of its experiments ("The
+// Benchmark", "Algorithms"). Written from the registry, as theorems.csv is, and again by
+// make_report, so that the report of a run made before this file existed knows too.
+void write_algorithm_table(const std::filesystem::path& dir) {
+  std::ofstream table(dir / "algorithms.csv");
+  table << "algorithm,simplifies\n";
+  for (const algorithms::Algorithm& algorithm : algorithms::registry())
+    table << algorithm.name << ',' << (algorithm.simplifies ? 1 : 0) << '\n';
+}
+
 // Pictures::some: keeps, per algorithm and suite, the first failure_pictures pictures of
 // jobs that are not exact, in job order, and deletes the others' (the successes drawn are
 // few already). Keeping the first ones makes the result that of one run whatever the
@@ -232,6 +254,7 @@ void write_outputs(const std::filesystem::path& dir, std::vector<Result_row> row
   for (const certify::Theorem& theorem : certify::theorems())
     theorems << theorem.algorithm->name << ',' << format_number(theorem.bound) << '\n';
   theorems.close();
+  write_algorithm_table(dir);
   if (report) make_report(dir);
 }
 
@@ -577,6 +600,7 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& text) {
 }
 
 bool make_report(const std::filesystem::path& dir) {
+  write_algorithm_table(dir);
   const std::string script = (resource_root() / "bench/report/make_report.py").string();
   const std::string python = "/usr/bin/python3";
   std::fflush(nullptr);

@@ -16,8 +16,9 @@ from ._algorithms import as_name
 
 # results.csv's columns by type (bench/runner/results_table.h); the rest are text.
 _FLAGS = ("exact", "manifold", "true_topology")
-_COUNTS = ("job", "n_points", "components", "open_components", "closed_components", "unconnected")
-_NUMBERS = ("epsilon", "rho", "uniformity", "hausdorff", "rms", "normal_deviation", "runtime_ms", "startup_ms")
+_COUNTS = ("job", "n_points", "components", "open_components", "closed_components", "unconnected", "output_points")
+_NUMBERS = ("epsilon", "rho", "uniformity", "hausdorff", "rms", "hausdorff_to_curve", "rms_to_curve",
+            "hausdorff_from_curve", "rms_from_curve", "normal_deviation", "runtime_ms", "startup_ms")
 
 
 class RunResult(NamedTuple):

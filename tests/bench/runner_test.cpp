@@ -194,6 +194,37 @@ TEST(Evaluation, MovedPointsAreMatchedToTheInputPointTheyStandFor) {
   EXPECT_EQ(evaluate({input, truth}, true, &truth_view, nullptr).exact, true);
 }
 
+// A simplifier's output on the unit square, measured each way against closed forms. The
+// bottom edge and the corner (1, 1) alone: they lie on the square (0 out); from the square,
+// the right side is min(y, 1 - y) away, the top 1 - x, the left y, so H = 1 (at (0, 1)) and
+// RMS^2 = (0 + 1/12 + 1/3 + 1/3) / 4 = 3/16. Two opposite corners alone: every side runs
+// from a kept corner to a dropped one, t away at t, so RMS^2 = 1/3.
+TEST(Evaluation, ASimplifiersOutputIsMeasuredEachWayWithItsIsolatedVertices) {
+  const std::vector<Point> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<Edge> cycle{{0, 1}, {0, 3}, {1, 2}, {2, 3}};
+  const geometry::Polyline_view truth{square, cycle};
+  const std::vector<Point> kept{{0, 0}, {1, 0}, {1, 1}};
+  const std::vector<Edge> bottom{{0, 1}};
+  const Evaluation edge_and_corner = evaluate({kept, bottom}, false, &truth, nullptr, true);
+  ASSERT_TRUE(edge_and_corner.to_curve && edge_and_corner.from_curve);
+  EXPECT_NEAR(edge_and_corner.to_curve->hausdorff, 0, 1e-12);
+  EXPECT_NEAR(edge_and_corner.to_curve->rms, 0, 1e-12);
+  EXPECT_NEAR(edge_and_corner.from_curve->hausdorff, 1, 1e-12);
+  EXPECT_NEAR(edge_and_corner.from_curve->rms, std::sqrt(3.0) / 4, 1e-6);
+  EXPECT_EQ(edge_and_corner.topology.unconnected, 1u);  // the isolated corner
+
+  const std::vector<Point> corners{{0, 0}, {1, 1}};
+  const Evaluation two_corners = evaluate({corners, {}}, false, &truth, nullptr, true);
+  ASSERT_TRUE(two_corners.from_curve);
+  EXPECT_NEAR(two_corners.from_curve->hausdorff, 1, 1e-12);
+  EXPECT_NEAR(two_corners.from_curve->rms, 1 / std::sqrt(3.0), 1e-6);
+  EXPECT_EQ(two_corners.to_curve->hausdorff, 0);
+
+  // An interpolator's points in no edge are no output: nothing is measured one way.
+  const Evaluation interpolated = evaluate({kept, bottom}, false, &truth, nullptr);
+  EXPECT_FALSE(interpolated.to_curve || interpolated.from_curve);
+}
+
 TEST(Suites, EveryCaseNamesAKnownSourceAndLevel) {
   std::set<std::string_view> names;
   for (const Suite& suite : suites()) {
@@ -433,6 +464,18 @@ TEST(Run, SmokeSuiteRowsAndResume) {
     EXPECT_TRUE(json[j]["message"].is_null());
   }
 
+  // Only a simplifier is measured each way; every row counts the points of its output.
+  for (const Result_row& row : rows) {
+    EXPECT_TRUE(row[Column::hausdorff_to_curve].empty() && row[Column::rms_from_curve].empty()) << row.job();
+    EXPECT_EQ(row[Column::output_points], row[Column::n_points]) << row.job();
+  }
+  // The report learns from algorithms.csv which algorithms simplify.
+  std::ifstream table(options.output / "algorithms.csv");
+  const std::string text{std::istreambuf_iterator<char>(table), {}};
+  EXPECT_EQ(text.rfind("algorithm,simplifies\n", 0), 0u);
+  EXPECT_NE(text.find("\noptimal-transport,1\n"), std::string::npos);
+  EXPECT_NE(text.find("\nnn-crust,0\n"), std::string::npos);
+
   // Without --resume an existing run is not overwritten; with it, nothing is left to do.
   EXPECT_THROW(run_suite(options), std::invalid_argument);
   options.resume = true;
@@ -465,6 +508,31 @@ TEST(Run, SmokeSuiteRowsAndResume) {
 // Pictures::some: per algorithm and suite, the first 6 failures in job order and the first
 // 2 jobs. The EMST is a tree, so it fails on every circle; NN-Crust is exact on each
 // (epsilon 0.1 < 1/3). Shards merged keep the same pictures as one run.
+// Optimal Transport simplifies: its rows hold its output's size and its distances each way,
+// whose larger Hausdorff is the symmetric one when it keeps no isolated vertex.
+TEST(Run, ASimplifierIsMeasuredEachWayAndByItsSize) {
+  testing::TemporaryDirectory dir;
+  const Run_options options{.suite = "smoke", .output = dir.path() / "ot", .algorithms = {"optimal-transport"},
+                            .jobs = 2, .report = false, .progress = false};
+  run_suite(options);
+  const std::vector<Result_row> rows = read_results_csv(options.output / "results.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const Result_row& row : rows) {
+    ASSERT_EQ(row[Column::status], "ok") << row[Column::message];
+    const std::size_t kept = std::stoul(row[Column::output_points]);
+    EXPECT_GT(kept, 0u);
+    EXPECT_LE(kept, std::stoul(row[Column::n_points]));
+    for (const Column column : {Column::hausdorff_to_curve, Column::rms_to_curve, Column::hausdorff_from_curve,
+                                Column::rms_from_curve})
+      EXPECT_TRUE(std::isfinite(std::stod(row[column]))) << row.job();
+    EXPECT_LE(std::stod(row[Column::rms_to_curve]), std::stod(row[Column::hausdorff_to_curve]));
+    EXPECT_LE(std::stod(row[Column::rms_from_curve]), std::stod(row[Column::hausdorff_from_curve]));
+    if (row[Column::unconnected] == "0")
+      EXPECT_EQ(std::stod(row[Column::hausdorff]),
+                std::max(std::stod(row[Column::hausdorff_to_curve]), std::stod(row[Column::hausdorff_from_curve])));
+  }
+}
+
 TEST(Run, SomePicturesAreTheFirstFailuresAndJobsPerAlgorithmAndSuite) {
   testing::TemporaryDirectory dir;
   std::vector<Suite_case> cases;
