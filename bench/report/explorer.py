@@ -5,7 +5,8 @@ The data is a script, not JSON, because Chromium refuses fetch() of a file:// UR
 <script src> loads from file:// everywhere. It is columnar and compact, so that a full run's
 hundreds of thousands of rows load in one go: text columns are dictionary-coded (each
 distinct value once, then a small integer per row), numbers keep 6 significant digits, and
-a picture is 1 when it has its default name pictures/JOB.svg.
+a picture is 1 when it has its default name pictures/JOB.svg. `simplifies` names the algorithms whose
+exactness does not apply (the report's Simplifiers section): the page shows "n/a (simplifies)" for them.
 """
 import json
 import math
@@ -15,7 +16,8 @@ import shutil
 PAGE = pathlib.Path(__file__).with_name("explorer.html")
 TEXT_COLUMNS = ("suite", "input", "level", "algorithm", "params", "status", "message")
 NUMBER_COLUMNS = ("job", "n_points", "epsilon", "rho", "hausdorff", "rms", "normal_deviation", "components",
-                  "runtime_ms")
+                  "runtime_ms", "hausdorff_to_curve", "rms_to_curve", "hausdorff_from_curve", "rms_from_curve",
+                  "closed_components", "open_components", "unconnected", "output_points")
 
 
 def encode_text(values):
@@ -52,14 +54,15 @@ def encode_picture(row):
 
 def explorer_data(run):
     """The rows of `run` (make_report.Run) as columns. `exact` is the report's: a job that failed on an
-    input with ground truth counts as not exact; null means the input has no ground truth."""
+    input with ground truth counts as not exact; null means the input has no ground truth, or the algorithm
+    simplifies."""
     rows = run.rows
     columns = {c: encode_text([r[c] for r in rows]) for c in TEXT_COLUMNS}
     columns.update({c: [encode_number(r[c]) for r in rows] for c in NUMBER_COLUMNS})
     columns["exact"] = [encode_flag(r["_exact"]) for r in rows]
     columns["true_topology"] = [encode_flag(r["_true_topology"]) for r in rows]
     columns["picture"] = [encode_picture(r) for r in rows]
-    return {"rows": len(rows), "columns": columns}
+    return {"rows": len(rows), "columns": columns, "simplifies": list(run.simplifiers)}
 
 
 def write_explorer(run, out_dir):

@@ -6,6 +6,9 @@ Usage: /usr/bin/python3 bench/report/make_report.py DIR
 
 The charts mirror the survey's "Quantitative Evaluation" figures: mean RMS and exact
 reconstruction % per algorithm and level, mean runtime (log scale) and a status overview.
+An algorithm that simplifies rather than interpolates (DIR/algorithms.csv, from the registry:
+Optimal Transport) is scored apart, as the survey does: "n/a (simplifies)" wherever algorithms
+are ranked by exactness, and a section of its own with distances both ways, topology and size.
 /usr/bin/python3 because Debian's python3-matplotlib is installed for that interpreter only.
 """
 import collections
@@ -137,8 +140,11 @@ def ordered(values):
     return list(dict.fromkeys(values))
 
 
-COLUMNS = ("job suite input level algorithm params n_points epsilon rho uniformity status exact hausdorff rms normal_deviation "
-           "manifold components open_components closed_components unconnected true_topology runtime_ms startup_ms picture message").split()
+COLUMNS = ("job suite input level algorithm params n_points epsilon rho uniformity status exact hausdorff rms "
+           "hausdorff_to_curve rms_to_curve hausdorff_from_curve rms_from_curve normal_deviation manifold components "
+           "open_components closed_components unconnected output_points true_topology runtime_ms startup_ms picture "
+           "message").split()
+SIMPLIFIES = "n/a (simplifies)"  # an exactness cell of an algorithm that simplifies
 
 
 def read_rows(path):
@@ -147,13 +153,25 @@ def read_rows(path):
         return [{c: (row.get(c) or "").strip() for c in COLUMNS} for row in csv.DictReader(f)]
 
 
-class Run:
-    """The rows plus derived orderings and per-row facts shared by charts and tables."""
+def read_simplifiers(out_dir):
+    """The algorithms DIR/algorithms.csv (written by `curvebench run` and `report`) marks as simplifying; none
+    without that file."""
+    path = pathlib.Path(out_dir) / "algorithms.csv"
+    if not path.is_file():
+        return frozenset()
+    with open(path, newline="", encoding="utf-8") as f:
+        return frozenset(r["algorithm"] for r in csv.DictReader(f) if r.get("simplifies") == "1")
 
-    def __init__(self, rows):
+
+class Run:
+    """The rows plus derived orderings and per-row facts shared by charts and tables. `simplifiers`: the algorithms
+    that simplify (read_simplifiers), whose jobs count in no exactness share."""
+
+    def __init__(self, rows, simplifiers=frozenset()):
         self.rows = rows
         self.suites = ordered(r["suite"] for r in rows)
         self.algorithms = ordered(r["algorithm"] for r in rows)
+        self.simplifiers = [a for a in self.algorithms if a in simplifiers]
         # tab20's strong colours first: they equal tab10's, so the first ten algorithms keep
         # their colours when more are added.
         tab20 = plt.get_cmap("tab20").colors
@@ -169,7 +187,14 @@ class Run:
                 r["_exact"] = False
             # A failed job on an input with ground truth has the wrong topology, as it is not exact.
             r["_true_topology"] = flag(r["true_topology"]) if r["_ok"] else (False if r["_exact"] is False else None)
+            # A simplifier's output is never the input's edge set, by design: it is no miss ("The Benchmark",
+            # "Algorithms": the survey leaves Optimal Transport out of every experiment).
+            r["_simplifies"] = r["algorithm"] in simplifiers
+            if r["_simplifies"]:
+                r["_exact"] = r["_true_topology"] = None
 
+    def simplifies(self, algorithm):
+        return algorithm in self.simplifiers
     def suite_rows(self, suite):
         return [r for r in self.rows if r["suite"] == suite]
 
@@ -436,6 +461,7 @@ def breakdown_table(run, theorems, csv_path):
                  and r["_exact"] is not None and 0 < (number(r["epsilon"]) or math.inf) <= BREAKDOWN_TABLE_UP_TO]
         if len(cases) >= 10:
             out.append((algorithm, cases, breakdown_intervals(cases)))
+    apart = [a for a in run.simplifiers if any(r["algorithm"] == a for r in rows)]
     if not out:
         return ""
     with open(csv_path, "w", newline="", encoding="utf-8") as f:
@@ -455,6 +481,10 @@ def breakdown_table(run, theorems, csv_path):
                          + "".join(f"<td class=n>{esc(fmt_breakdown(found[q], smallest, largest))}</td>"
                                    for q in (0.95, 0.5))
                          + f"<td class=n>{esc(fmt(bound, '.3g')) if bound else '–'}</td></tr>")
+    for algorithm in apart:
+        cases = sum(1 for r in rows if r["algorithm"] == algorithm)
+        html_rows.append(f"<tr><td>{esc(algorithm)}</td><td class=n>{cases}</td>"
+                         + f"<td class=na>{SIMPLIFIES}</td>" * 3 + "<td class=n>–</td></tr>")
     suites = ", ".join(s for s in BREAKDOWN_SUITES if s in run.suites)
     return ("<h2 id=breakdown>Empirical breakdown</h2><table><tr><th>algorithm</th><th>cases</th><th>exact</th>"
             "<th>exact rate below 95 % from epsilon</th><th>below 50 % from epsilon</th><th>proven bound</th></tr>"
@@ -464,6 +494,136 @@ def breakdown_table(run, theorems, csv_path):
             "at which the exact-reconstruction rate, fitted as a logistic function of ln epsilon, drops below 95 % and "
             "below 50 %, with its percentile-bootstrap 95 % interval over the cases; '&gt;' or '&lt;' where the fitted rate crosses beyond the epsilons measured. The proven bound is "
             "the theorem's (survey: Guarantees as Sampling Conditions). Written as breakdown-thresholds.csv.</p>")
+
+
+# ---------------------------------------------------------------- simplifiers
+
+# A simplifier's cells: (key, header, what per job). Distances are fractions of the true curve's
+# bounding-box diagonal, as results.csv writes them; "share" is the output's vertices over the input's points.
+SIMPLIFIER_MEANS = [
+    ("output_share", "output vertices / input points", lambda r: output_share(r)),
+    ("hausdorff_to_curve", "Hausdorff output → curve", lambda r: measure(r["hausdorff_to_curve"])),
+    ("rms_to_curve", "RMS output → curve", lambda r: measure(r["rms_to_curve"])),
+    ("hausdorff_from_curve", "Hausdorff curve → output", lambda r: measure(r["hausdorff_from_curve"])),
+    ("rms_from_curve", "RMS curve → output", lambda r: measure(r["rms_from_curve"])),
+    ("components", "components", lambda r: measure(r["components"])),
+    ("closed_components", "closed", lambda r: measure(r["closed_components"])),
+    ("open_components", "open", lambda r: measure(r["open_components"])),
+    ("isolated", "isolated vertices", lambda r: measure(r["unconnected"])),
+]
+SIMPLIFIER_SHARES = [
+    ("manifold", "manifold", lambda r: flag(r["manifold"])),
+    ("true_topology", "the truth's topology", lambda r: flag(r["true_topology"])),
+]
+
+
+def measure(text):
+    """A float, infinity included (a curve far from an empty output), or None."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        return None
+    return None if math.isnan(value) else value
+
+
+def output_share(r):
+    kept, of = measure(r["output_points"]), measure(r["n_points"])
+    return kept / of if kept is not None and of else None
+
+
+def mean_of(values):
+    """(mean interval of the finite values, number of infinite ones)."""
+    values = [v for v in values if v is not None]
+    return mean_interval(values), sum(1 for v in values if math.isinf(v))
+
+
+def fmt_mean_of(interval, infinite=0, scale=1.0, suffix=""):
+    """'0.0123 ±0.0021, n=30': the mean, the half-width of its Student-t 95% interval and the sample size."""
+    m, n, low, high = interval
+    if n == 0 and not infinite:
+        return "–"
+    def short(value, digits):  # no exponent for a share above 100 % or a large count
+        return f"{value:.0f}" if abs(value) >= 10 ** digits else f"{value:.{digits}g}"
+
+    text = "–" if n == 0 else (short(scale * m, 3) + suffix
+                               + ("" if low is None else f" ±{short(scale * (high - low) / 2, 2)}{suffix}"))
+    return text + f", n={n}" + (f" (+{infinite} ∞)" if infinite else "")
+
+
+def simplifier_cells(rows):
+    """The section's statistics of one group of a simplifier's jobs: {key: (mean interval, infinite)} and
+    {key: Wilson share}, over ok jobs (a job that failed has no output to measure; the jobs column counts it)."""
+    ok = [r for r in rows if r["_ok"]]
+    means = {key: mean_of(f(r) for r in ok) for key, _, f in SIMPLIFIER_MEANS}
+    shares = {key: wilson(f(r) for r in ok) for key, _, f in SIMPLIFIER_SHARES}
+    return means, shares
+
+
+def simplifier_section(run, csv_path):
+    """The section of the algorithms that simplify (Optimal Transport), by suite and level: their size, their
+    distance to the true curve each way and their topology, with intervals; also written to csv_path. Empty
+    without such an algorithm."""
+    groups = []
+    for a in run.simplifiers:
+        for suite in run.suites:
+            rows = [r for r in run.suite_rows(suite) if r["algorithm"] == a]
+            for level in sorted(ordered(r["level"] for r in rows), key=level_key):
+                group = [r for r in rows if r["level"] == level]
+                groups.append((a, suite, level, group, *simplifier_cells(group)))
+    if not groups:
+        return ""
+    with open(csv_path, "w", newline="", encoding="utf-8") as f:
+        out = csv.writer(f, lineterminator="\n")
+        out.writerow(["algorithm", "suite", "level", "jobs", "ok"]
+                     + [f"{key}_{x}" for key, _, _ in SIMPLIFIER_MEANS for x in ("n", "mean", "low", "high", "infinite")]
+                     + [f"{key}_{x}" for key, _, _ in SIMPLIFIER_SHARES for x in ("k", "n", "pct", "low", "high")])
+        for a, suite, level, group, means, shares in groups:
+            line = [a, suite, level, len(group), sum(r["_ok"] for r in group)]
+            for key, _, _ in SIMPLIFIER_MEANS:
+                (m, n, low, high), infinite = means[key]
+                line += [n] + ["" if v is None else v for v in (m, low, high)] + [infinite]
+            for key, _, _ in SIMPLIFIER_SHARES:
+                k, n, low, high = shares[key]
+                line += [k, n, "" if n == 0 else 100 * k / n, "" if low is None else low, "" if high is None else high]
+            out.writerow(line)
+
+    def table(columns, cell):
+        head = "".join(f"<th>{esc(title)}</th>" for _, title, _ in columns)
+        lines = [f"<table><tr><th>algorithm</th><th>suite</th><th>level</th><th>jobs</th>{head}</tr>"]
+        for a, suite, level, group, means, shares in groups:
+            ok = sum(r["_ok"] for r in group)
+            jobs = f"{len(group)}" + ("" if ok == len(group) else f" ({ok} ok)")
+            lines.append(f"<tr><td>{esc(a)}</td><td>{esc(suite or '(unnamed)')}</td><td>{esc(level or '–')}</td>"
+                         f"<td class=n>{esc(jobs)}</td>"
+                         + "".join(f"<td class=n>{esc(cell(key, means, shares))}</td>" for key, _, _ in columns) + "</tr>")
+        return "".join(lines) + "</table>"
+
+    def mean_cell(key, means, shares):
+        interval, infinite = means[key]
+        return fmt_mean_of(interval, infinite, 100, "%") if key == "output_share" else fmt_mean_of(interval, infinite)
+
+    names = ", ".join(run.simplifiers)
+    return ("<h2 id=simplifiers>Simplifiers, scored apart</h2>"
+            f"<p>{esc(names)} simplif{'ies' if len(run.simplifiers) == 1 else 'y'}: the output's vertices are a few of "
+            "the input points, joined where the curve is found, and a vertex with no edge is an output point too. The "
+            "survey leaves such a method out of its experiments (\"The Benchmark\", \"Algorithms\": Optimal Transport "
+            "\"focuses on simplified reconstruction and hence, for a fair comparison, we have not included it\"), so "
+            f"here its exactness cells read {SIMPLIFIES} and it is measured by what it is for: how far its output "
+            "lies from the true curve, and the curve from it, how many points it keeps, and its topology.</p>"
+            "<h3>Size and distance, each way</h3>" + table(SIMPLIFIER_MEANS[:5], mean_cell)
+            + "<h3>Topology</h3>" + table(SIMPLIFIER_MEANS[5:] + SIMPLIFIER_SHARES,
+                                          lambda key, means, shares: fmt_share(shares[key]) if key in shares
+                                          else mean_cell(key, means, shares))
+            + "<p class=note>Over the ok jobs of each suite and level (the jobs column counts every job): means ± the "
+            "half-width of their Student-t 95% interval, and n, the number of jobs measured; shares with their Wilson "
+            "95% interval and the number of jobs. Output → curve and curve → output are the survey's two closest-point mappings "
+            "(\"Evaluation Criteria\": D and D') taken one at a time, in units of the true curve's bounding-box "
+            "diagonal: output → curve says whether the output strays from the curve, curve → output whether part of "
+            "the curve is left without output nearby; an isolated vertex counts in both Hausdorff distances, while "
+            "each RMS weighs by length, so a vertex beside edges weighs nothing in it. ∞: a curve with no output at "
+            "all, counted apart from the mean. Components, closed and open count the connected pieces with edges; "
+            "the truth's topology: a manifold with the true curve's closed and open components, isolated vertices "
+            "aside. Written as simplifiers.csv.</p>")
 
 
 def make_charts(run, charts_dir):
@@ -487,10 +647,12 @@ def make_charts(run, charts_dir):
             made[suite].append((name, f"Mean RMS over ok jobs; {NOT_DRAWN} = no ok job with ground truth."))
         if any(r["_exact"] is not None for r in rows):
             name = f"exact-{safe_name(suite)}.svg"
-            grouped_bars(run, rows, "exact", f"{suite}: exactly reconstructed", "exact reconstructions [%]",
-                         charts_dir / name, percent_axis=True)
+            grouped_bars(run, [r for r in rows if not r["_simplifies"]], "exact", f"{suite}: exactly reconstructed",
+                         "exact reconstructions [%]", charts_dir / name, percent_axis=True)
+            apart = [a for a in run.simplifiers if any(r["algorithm"] == a for r in rows)]
             made[suite].append((name, "Share of jobs whose edge set equals the ground truth; "
-                                      f"failed jobs count as not exact; {NOT_DRAWN} = no ground truth."))
+                                      f"failed jobs count as not exact; {NOT_DRAWN} = no ground truth"
+                                      + (f"; not drawn, as they simplify: {', '.join(apart)}." if apart else ".")))
     # The empirical breakdown of the theorems: suite `certify`, measured epsilon and rho.
     theorems = read_theorems(charts_dir.parent / "theorems.csv")
     certify_rows = run.suite_rows("certify") if "certify" in run.suites else []
@@ -517,6 +679,7 @@ th, td { border: 1px solid #ddd; padding: 3px 8px; text-align: left; vertical-al
 th { background: #f3f3f3; } td.n { text-align: right; font-variant-numeric: tabular-nums; }
 td.bad, .why { color: #c00; font-weight: bold; }
 table.matrix td { text-align: center; } table.matrix td.lead { font-weight: bold; }
+td.na { color: #777; font-style: italic; text-align: center; }
 .swatch { display: inline-block; width: 0.8em; height: 0.8em; margin-right: 0.4em; vertical-align: baseline; }
 .charts { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
 .charts figure { margin: 0; } .charts img { max-width: 100%; }
@@ -575,12 +738,13 @@ def summary_table(run, suite, rows):
                 head = (f'<td rowspan="{len(groups)}"><span class="swatch" style="background:rgb({r},{g},{b})">'
                         f"</span>{esc(a)}</td>")
             bad = ' bad' if s["failures"] else ''
+            apart = run.simplifies(a)
             out.append(f"<tr>{head}<td>{esc(lv or '–')}</td><td class=n>{s['jobs']}</td>"
-                       f"<td class=n>{esc(fmt_share(s['exact_interval']))}</td>"
+                       f"<td class=n>{SIMPLIFIES if apart else esc(fmt_share(s['exact_interval']))}</td>"
                        f"<td class=n>{esc(fmt_mean(s['rms_interval']))}</td>"
                        f"<td class=n>{esc(fmt_mean(s['hausdorff_interval']))}</td>"
                        f"<td class=n>{fmt(s['manifold'], '.0f', '%')}</td>"
-                       f"<td class=n>{esc(fmt_share(s['true_topology']))}</td>"
+                       f"<td class=n>{SIMPLIFIES if apart else esc(fmt_share(s['true_topology']))}</td>"
                        f"<td class='n{bad}'>{esc(failures_text(s['failures']))}</td></tr>")
     out.append("</table><p class=note>exact: share of jobs reconstructed exactly, where a failed job on an input "
                "with ground truth counts as not exact, with its Wilson 95% interval and the number of jobs; RMS, "
@@ -597,7 +761,7 @@ def failure_reason(r):
     if not r["_ok"]:
         message = r["message"] if len(r["message"]) <= 160 else r["message"][:157] + "…"
         return f"{r['status'] or 'no status'}: {message}" if message else (r["status"] or "no status")
-    if flag(r["exact"]) is False:
+    if r["_exact"] is False:
         components = r["components"]
         topology = [f"{components} component{'' if components == '1' else 's'}" if components else "",
                     "non-manifold" if flag(r["manifold"]) is False else ""]
@@ -608,7 +772,7 @@ def failure_reason(r):
 
 def gallery(rows):
     pictured = [r for r in rows if r["picture"]]
-    pictured.sort(key=lambda r: (r["_ok"], flag(r["exact"]) is not False))  # stable: job order within
+    pictured.sort(key=lambda r: (r["_ok"], r["_exact"] is not False))  # stable: job order within
     shown = pictured[:GALLERY_CAP]
     if not shown:
         return "<p>No pictures.</p>"
@@ -619,7 +783,8 @@ def gallery(rows):
                    f"RMS {fmt(number(r['rms']))}" if r["rms"] else "",
                    f"Hausdorff {fmt(number(r['hausdorff']))}" if r["hausdorff"] else "",
                    f"{fmt(number(r['runtime_ms']))} ms" if r["runtime_ms"] else "",
-                   "exact" if flag(r["exact"]) else ""]
+                   "exact" if r["_exact"] else "",
+                   f"kept {r['output_points']} of {r['n_points']} points" if r["_simplifies"] and r["output_points"] else ""]
         title = " · ".join(t for t in [f"#{r['job']}", r["algorithm"], r["level"], r["params"]] if t)
         out.append(f'<figure class="shot{" fail" if why else ""}" id="job-{esc(r["job"])}">'
                    f'<img src="{esc(urllib.parse.quote(r["picture"]))}" alt="job {esc(r["job"])}"><figcaption>'
@@ -670,7 +835,9 @@ def write_summary(run, path):
                 if not group:
                     continue
                 st = group_stats(group)
-                table.append([suite, level, a, st["jobs"]] + cells(st["exact_interval"]) + cells(st["true_topology"])
+                # Empty, not 0 of 0: exactness does not apply to a simplifier (its rows are in simplifiers.csv).
+                shares = [""] * 10 if run.simplifies(a) else cells(st["exact_interval"]) + cells(st["true_topology"])
+                table.append([suite, level, a, st["jobs"]] + shares
                              + means(st["rms_interval"]) + means(st["hausdorff_interval"])
                              + ["" if st["runtime"] is None else st["runtime"]]
                              + ["" if st["startup"] is None else st["startup"]])
@@ -700,6 +867,9 @@ def matrix_table(run, key, what):
         cells = []
         for s in suites:
             result, best = columns[s]
+            if run.simplifies(a) and any(r["algorithm"] == a for r in run.suite_rows(s)):
+                cells.append(f'<td class=na title="scored apart: see Simplifiers">{SIMPLIFIES}</td>')
+                continue
             if a not in result:
                 cells.append("<td>–</td>")
                 continue
@@ -718,7 +888,9 @@ def matrix_table(run, key, what):
 
 MATRIX_NOTE = ("<p class=note>Each cell: the share over all the suite's levels, its Wilson 95% interval and the number "
                "of jobs (a failed job counts as a miss). ★: the best of the column, and every algorithm McNemar's exact "
-               "test on the same instances cannot tell from it (p ≥ 0.05); hover a cell for its p-value.</p>")
+               "test on the same instances cannot tell from it (p ≥ 0.05); hover a cell for its p-value. "
+               f"{SIMPLIFIES}: an algorithm that simplifies (keeps a few of the points) is not ranked by exactness, as "
+               'the survey leaves it out of its experiments; <a href="#simplifiers">Simplifiers</a> scores it.</p>')
 
 
 # The survey's own reported results (its figures hold no readable data here, so these are the
@@ -865,7 +1037,9 @@ def report_html(run, charts, out_dir, csv_path):
             f"{counted(len(run.algorithms), 'algorithm')}: {esc(', '.join(run.algorithms))}.<br>Status: "
             + esc(", ".join(f"{s or '(empty)'} {n}" for s, n in status_counts.most_common()))
             + '. <a href="#nonok">Non-ok jobs</a>. <a href="explorer.html">Explore the results</a>: filter, '
-            'sort, compare two algorithms on the same input, replay a job.</p>')
+            'sort, compare two algorithms on the same input, replay a job.'
+            + (f' Scored apart, as they simplify: <a href="#simplifiers">{esc(", ".join(run.simplifiers))}</a>.'
+               if run.simplifiers else "") + "</p>")
         exact_matrix = matrix_table(run, "_exact", "exact")
         topology_matrix = matrix_table(run, "_true_topology", "true topology")
         if exact_matrix:
@@ -874,6 +1048,7 @@ def report_html(run, charts, out_dir, csv_path):
                          + topology_matrix + MATRIX_NOTE)
         parts.append(survey_table(run))
         parts.append(breakdown_table(run, read_theorems(out_dir / "theorems.csv"), out_dir / "breakdown-thresholds.csv"))
+        parts.append(simplifier_section(run, out_dir / "simplifiers.csv"))
         parts.append("<h2>Overview</h2>" + chart_figures(charts[None]))
         for suite in run.suites:
             rows = run.suite_rows(suite)
@@ -893,7 +1068,7 @@ def main(argv):
     csv_path = out_dir / "results.csv"
     if not csv_path.is_file():
         sys.exit(f"make_report: {csv_path} not found")
-    run = Run(read_rows(csv_path))
+    run = Run(read_rows(csv_path), read_simplifiers(out_dir))
     charts = make_charts(run, out_dir / "charts")
     write_summary(run, out_dir / "summary.csv")
     write_explorer(run, out_dir)

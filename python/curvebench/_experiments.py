@@ -65,7 +65,8 @@ def _summary(directory):
     if not summary.exists():
         report = pathlib.Path(_core.resource_root()) / "bench" / "report"
         code = ("import pathlib, sys; sys.path.insert(0, sys.argv[1]); import make_report as m; "
-                "m.write_summary(m.Run(m.read_rows(sys.argv[2])), pathlib.Path(sys.argv[3]))")
+                "rows = pathlib.Path(sys.argv[2]); "
+                "m.write_summary(m.Run(m.read_rows(rows), m.read_simplifiers(rows.parent)), pathlib.Path(sys.argv[3]))")
         done = subprocess.run([sys.executable, "-c", code, str(report), str(directory / "results.csv"), str(summary)],
                               capture_output=True, text=True)
         if done.returncode != 0:

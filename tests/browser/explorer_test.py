@@ -4,7 +4,8 @@
 Filtering to one algorithm and "not exact" shows as many rows as results.csv holds; so does
 the query "exact for B, not for A"; clicking a row loads its picture, and a second algorithm
 on the same input shows beside it; the row's replay command, run, gives the row's result;
-the page logs no console error. Then a synthetic 200,000-row results set measures load and
+the page logs no console error. A run with Optimal Transport, which simplifies, shows "n/a (simplifies)" for
+its exactness and its distances each way. Then a synthetic 200,000-row results set measures load and
 filter times.
 
 Usage: explorer_test.py PATH/TO/curvebench WORKDIR   (WORKDIR gets explorer.png and the run)
@@ -129,6 +130,39 @@ def replay_ok(driver, row):
     check("the replay gives the row's exactness", exact == (row["exact"] == "1"), replay)
 
 
+def simplifier_run(driver):
+    """Optimal Transport simplifies: its exact cells read "n/a (simplifies)", a filter lists exactly its rows (and
+    "no ground truth" none of them), and its detail gives its output's size and its distances each way."""
+    run = WORK / "simplifier"
+    shutil.rmtree(run, ignore_errors=True)
+    subprocess.run([CURVEBENCH, "run", "smoke", "-a", "optimal-transport,nn-crust", "-o", run, "-q"], check=True)
+    with open(run / "results.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    simplified = [r for r in rows if r["algorithm"] == "optimal-transport"]
+    driver.get((run / "explorer.html").resolve().as_uri())
+    chromium.wait_until(lambda: driver.execute_script("return document.body.dataset.ready"), "the explorer")
+    choose(driver, "exact", "n/a (simplifies)")
+    check("n/a (simplifies): Optimal Transport's rows", row_count(driver) == len(simplified),
+          f"{row_count(driver)} of {len(simplified)}")
+    cells = [td.text for td in driver.find_elements(By.CSS_SELECTOR, "#rows tr td:nth-child(7)")]
+    check("its exact cells read n/a (simplifies)", cells == ["n/a (simplifies)"] * len(simplified), cells)
+    choose(driver, "exact", "no ground truth")
+    check("no ground truth: none (every smoke input has one)", row_count(driver) == 0, row_count(driver))
+    choose(driver, "exact", "all")
+    choose(driver, "sort", "Hausdorff curve → output ↓")
+    first = int(driver.find_element(By.CSS_SELECTOR, "#rows tr").get_attribute("data-row"))
+    farthest = max(simplified, key=lambda r: float(r["hausdorff_from_curve"]))
+    check("sorted by Hausdorff curve → output, largest first", first == rows.index(farthest), first)
+    driver.find_element(By.CSS_SELECTOR, "#rows tr").click()
+    fields = {tr.find_element(By.TAG_NAME, "th").text: tr.find_element(By.TAG_NAME, "td").text
+              for tr in driver.find_elements(By.CSS_SELECTOR, "#fields tr")}
+    check("its detail: exact n/a, its output's size and distances each way",
+          fields.get("exact") == "n/a (simplifies)" and fields.get("output_points") == farthest["output_points"]
+          and fields.get("hausdorff_from_curve") == f"{float(farthest['hausdorff_from_curve']):.3g}", fields)
+    errors = chromium.console_errors(driver)
+    check("simplifier run: no console errors", not errors, errors)
+
+
 def synthetic_rows(count):
     algorithms = [f"algorithm-{k}" for k in range(20)]
     random.seed(1)
@@ -177,6 +211,7 @@ def main():
     driver = chromium.start(WORK, width=1400, height=900)
     try:
         small_run(driver)
+        simplifier_run(driver)
         large_run(driver)
     finally:
         driver.quit()
