@@ -18,6 +18,16 @@ trap 'rm -rf "$work"' EXIT
 for text in "<h2>Algorithms × experiments</h2>" "<h2>Beside the survey</h2>" "outside every sampling theorem"; do
   grep -qF "$text" "$work/default/report.html" || { echo "default report: no '$text'" >&2; exit 1; }
 done
+# Optimal Transport simplifies: its own section, and "n/a (simplifies)" in every exactness cell
+# of its, never a share (tests/report/simplifiers_test.py reads the tables).
+/usr/bin/python3 - "$root/tests/report" "$work/default/report.html" <<'EOF' || { echo "default report: Optimal Transport ranked by exactness, or no Simplifiers section" >&2; exit 1; }
+import sys
+sys.path.insert(0, sys.argv[1])
+import simplifiers_test as t
+page = open(sys.argv[2], encoding="utf-8").read()
+cells = t.exactness_cells(t.tables_of(sys.argv[2]), t.OT)
+sys.exit(0 if "id=simplifiers>" in page and cells and all(c == t.NA for c in cells) else 1)
+EOF
 # The default pictures (the first failures and jobs of each algorithm and suite) keep the
 # run's output small enough to keep and share.
 megabytes=$(du -s --apparent-size -B1M "$work/default" | cut -f1)
