@@ -5,7 +5,8 @@ The data is a script, not JSON, because Chromium refuses fetch() of a file:// UR
 <script src> loads from file:// everywhere. It is columnar and compact, so that a full run's
 hundreds of thousands of rows load in one go: text columns are dictionary-coded (each
 distinct value once, then a small integer per row), numbers keep 6 significant digits, and
-a picture is 1 when it has its default name pictures/JOB.svg. `simplifies` names the algorithms whose
+a picture is 1 when it has its default name pictures/JOB.svg, and a number column mostly empty lists only
+the rows that have a value (encode_sparse). `simplifies` names the algorithms whose
 exactness does not apply (the report's Simplifiers section): the page shows "n/a (simplifies)" for them.
 """
 import json
@@ -16,8 +17,9 @@ import shutil
 PAGE = pathlib.Path(__file__).with_name("explorer.html")
 TEXT_COLUMNS = ("suite", "input", "level", "algorithm", "params", "status", "message")
 NUMBER_COLUMNS = ("job", "n_points", "epsilon", "rho", "hausdorff", "rms", "normal_deviation", "components",
-                  "runtime_ms", "hausdorff_to_curve", "rms_to_curve", "hausdorff_from_curve", "rms_from_curve",
-                  "closed_components", "open_components", "unconnected", "output_points")
+                  "runtime_ms", "hausdorff_to_curve", "rms_to_curve", "hausdorff_from_curve", "rms_from_curve")
+# Shown for a simplifier's rows only, so kept for those alone.
+SIMPLIFIER_COLUMNS = ("closed_components", "open_components", "unconnected", "output_points")
 
 
 def encode_text(values):
@@ -41,6 +43,15 @@ def encode_number(text):
     return int(value) if value.is_integer() and abs(value) < 2**53 else float(f"{value:.6g}")
 
 
+def encode_sparse(values):
+    """A column mostly empty (the distances each way, measured for a simplifier only; epsilon and rho, for
+    noise-free curve samples only) as the rows that have a value and their values: {"at": [...], "values": [...]}."""
+    at = [i for i, v in enumerate(values) if v is not None]
+    if 2 * len(at) >= len(values):
+        return values
+    return {"at": at, "values": [values[i] for i in at]}
+
+
 def encode_flag(value):
     return None if value is None else int(bool(value))
 
@@ -58,7 +69,9 @@ def explorer_data(run):
     simplifies."""
     rows = run.rows
     columns = {c: encode_text([r[c] for r in rows]) for c in TEXT_COLUMNS}
-    columns.update({c: [encode_number(r[c]) for r in rows] for c in NUMBER_COLUMNS})
+    columns.update({c: encode_sparse([encode_number(r[c]) for r in rows]) for c in NUMBER_COLUMNS})
+    columns.update({c: encode_sparse([encode_number(r[c]) if r["_simplifies"] else None for r in rows])
+                    for c in SIMPLIFIER_COLUMNS})
     columns["exact"] = [encode_flag(r["_exact"]) for r in rows]
     columns["true_topology"] = [encode_flag(r["_true_topology"]) for r in rows]
     columns["picture"] = [encode_picture(r) for r in rows]

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job's report as a person sees it: runs the `default` suite, then loads its
 # report.html in headless Chromium (scripts/check_report.sh), which fails if any chart or
-# reconstruction picture is missing or broken, and checks the output stays under 50 MB.
+# reconstruction picture is missing or broken, and checks the output stays under 55 MB.
 # Keeps a screenshot in the build tree.
 # Usage: default_report_test.sh PATH/TO/curvebench SCREENSHOT.png
 set -euo pipefail
@@ -32,4 +32,6 @@ EOF
 # run's output small enough to keep and share.
 megabytes=$(du -s --apparent-size -B1M "$work/default" | cut -f1)
 echo "default run output: $megabytes MB"
-if ((megabytes >= 50)); then echo "default run output: $megabytes MB, not under 50 MB" >&2; exit 1; fi
+# 55, not 50, since results.json names the columns measured each way for a simplifier in every
+# row (3 MB of the 52 MB measured on 2026-12-06; pictures 22 MB, results.json 17 MB).
+if ((megabytes >= 55)); then echo "default run output: $megabytes MB, not under 55 MB" >&2; exit 1; fi
