@@ -56,7 +56,10 @@ struct Sampling_condition {
 };
 
 // Reconstructs from distinct points (the registry's reconstruct() merges duplicates
-// first), with checked parameter values.
+// first), with checked parameter values. The same points and values must give the same
+// result in any process, at any time (a random generator seeded by the call, ties broken
+// by point index, never by address or clock): the runner, the hunt, the fuzzers and the
+// determinism test compare runs, and a merged or resumed run is one run only then.
 using Reconstruct = std::function<Reconstruction(std::span<const Point>, const Parameter_values&)>;
 
 // The registry's call for an algorithm whose result is edges on its input points:
@@ -87,9 +90,6 @@ struct Algorithm {
   // and Evaluation": "we have not included it in any of our experiments"), and so does
   // the report, by distance and topology instead of exactness.
   bool simplifies = false;
-  // False where the same input may give different output between runs: Optimal
-  // Transport, whose CGAL implementation breaks cost ties by memory address.
-  bool repeatable = true;
 };
 
 }  // namespace curvebench::algorithms

@@ -3,7 +3,7 @@
 // 1-ulp moves, extreme scales; degenerate_point_program.h), through the registry's
 // reconstruct() as the command line calls it. Laws: no exception for valid parameters,
 // edges canonical and between input points, none at a merged duplicate, and the same
-// edges on a second run (for a repeatable algorithm).
+// output on a second run.
 //
 // Input: one byte choosing the algorithm (index modulo the registry's size), one byte
 // per parameter (0: its default; else a value spread over its range), then a point program.

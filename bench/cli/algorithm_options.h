@@ -11,7 +11,7 @@
 
 namespace curvebench::cli {
 
-// --algorithm-file FILE (repeatable): its algorithms are declared as the option is parsed,
+// --algorithm-file FILE (given once or more): its algorithms are declared as the option is parsed,
 // so that -a finds them by name wherever it stands on the line.
 void add_algorithm_file_option(CLI::App* command);
 

@@ -53,13 +53,6 @@ class Reader {
     return value->get<double>();
   }
 
-  bool flag(const std::string& key, bool otherwise) {
-    const json* value = find(key);
-    if (!value) return otherwise;
-    if (!value->is_boolean()) fail("\"" + key + "\" must be true or false");
-    return value->get<bool>();
-  }
-
   const std::string& where() const { return where_; }
   void rename(std::string where) { where_ = std::move(where); }
 
@@ -83,11 +76,17 @@ External_parameter parameter(const json& object, const std::string& where) {
 }
 
 External_declaration declaration(const json& object, const std::string& where) {
+  // Known, so that its refusal says why rather than "unknown key": files written for
+  // earlier versions may hold it.
   Reader r(object, where,
            {"name", "command", "title", "input_format", "index_base", "parameters", "timeout", "repeatable", "condition"});
   External_declaration d;
   d.name = r.text("name");
   r.rename(where + ": algorithm '" + d.name + "'");
+  if (object.contains("repeatable"))
+    r.fail("\"repeatable\" is no longer a key: every algorithm must give the same output for the same input "
+           "(seed its random generator with a constant, break ties by point index), and runs, hunts and merged "
+           "shards compare on that; remove the key");
   d.command = r.text("command");
   d.title = r.text("title", "");
   const std::string format = r.text("input_format", "xy");
@@ -102,7 +101,6 @@ External_declaration declaration(const json& object, const std::string& where) {
       d.parameters.push_back(parameter((*parameters)[k], r.where() + ": parameter " + std::to_string(k + 1)));
   }
   d.timeout_seconds = r.number("timeout");
-  d.repeatable = r.flag("repeatable", true);
   if (const json* condition = r.find("condition")) {
     Reader c(*condition, r.where() + ": condition", {"statement", "epsilon_below", "rho_below", "uniformity_below"});
     d.epsilon_below = c.number("epsilon_below");

@@ -12,13 +12,14 @@
 //      "parameters": [{"name": "k", "type": "integer", "default": 2, "min": 1, "max": 8,
 //                      "meaning": "neighbours looked at"}],   substituted as {k}
 //      "timeout": 30,                                seconds per run of the program
-//      "repeatable": true,                           false: output may differ between runs
 //      "condition": {"statement": "epsilon < 1/3", "epsilon_below": 0.3333,
 //                    "uniformity_below": 1.609, "rho_below": 0.9}}
 //   ]}
 //
 // Every key is checked: an unknown one, a wrong type or a missing name or command is an
-// error naming the file and the algorithm, before anything runs.
+// error naming the file and the algorithm, before anything runs. No key declares that
+// an algorithm may give different output for the same input: every algorithm must not,
+// and the key that once said so is refused with that reason.
 #pragma once
 
 #include <filesystem>

@@ -284,7 +284,6 @@ const algorithms::Algorithm& declare_external_algorithm(External_declaration dec
     a.parameters.push_back({p.name, p.integer ? algorithms::Parameter_type::integer : algorithms::Parameter_type::real,
                             p.default_value, p.minimum, p.maximum, p.meaning});
   a.condition = {d.condition, d.epsilon_below, d.rho_below, {}, d.uniformity_below};
-  a.repeatable = d.repeatable;
   a.reconstruct = [&d, parameters = std::span<const algorithms::Parameter>(a.parameters)](
                       std::span<const Point> points, const algorithms::Parameter_values& values) {
     return run_external(d, parameters, points, values);

@@ -74,7 +74,6 @@ struct External_declaration {
   int index_base = 0;  // the program numbers points from 0 (C, Python) or 1 (MATLAB, Julia, R)
   std::vector<External_parameter> parameters = {};  // each substituted as {NAME}
   std::optional<double> timeout_seconds = {};  // per run of the program, besides the run's own --timeout
-  bool repeatable = true;                      // false: the same input may give different output
   // The claimed sampling condition, which `certify` and `hunt` check like a theorem's.
   std::string condition = "none declared";
   // The claimed bound on epsilon, as algorithms::Sampling_condition states one.

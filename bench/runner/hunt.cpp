@@ -349,7 +349,7 @@ std::optional<Defect> find_defect(const algorithms::Algorithm& algorithm, const 
       return Defect{"not-exact-under-condition", message, {}};
     }
   }
-  if (!algorithm.repeatable || !first.moved.empty() || !general_position(points)) return std::nullopt;
+  if (!first.moved.empty() || !general_position(points)) return std::nullopt;
   const std::vector<std::size_t> representative = representatives(points);
   const std::vector<Edge> expected = in_original_terms(first.edges, identity, representative);
   const std::pair<const char*, const std::vector<std::size_t>*> laws[] = {

@@ -18,7 +18,7 @@
 //                   the edges (between input points, duplicates identified) differ between
 //                   two runs, or after rotating the input's order by one, doubling every
 //                   coordinate or negating every x; the three laws are checked for
-//                   repeatable algorithms that keep the input points, on input in general
+//                   algorithms that keep the input points, on input in general
 //                   position (no duplicate, three collinear, four cocircular or two equal
 //                   distances: there an algorithm breaks ties as it may)
 //   not-exact-under-condition

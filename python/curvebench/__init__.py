@@ -56,7 +56,7 @@ def algorithms():
     ``noise``, ``outliers``, ``manifold``, ``open``, ``multiple``, ``sharp`` as "yes", "no"
     or "only", ``guarantee``, ``time_complexity``), ``condition`` (the proven sampling
     condition: ``statement``, ``epsilon_below``, ``rho_below``, ``corner_angle_above``,
-    ``uniformity_below``, ``covers_open_curves``) and ``repeatable``.
+    ``uniformity_below``, ``covers_open_curves``).
 
     >>> [a["name"] for a in curvebench.algorithms()][:3]
     ['alpha-shape', 'beta-skeleton', 'emst']

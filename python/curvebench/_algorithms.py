@@ -140,7 +140,7 @@ def _free_name(function):
 
 
 def algorithm(function=None, *, name=None, title=None, parameters=None, epsilon_below=None, rho_below=None,
-              uniformity_below=None, covers_open_curves=False, condition=None, capabilities=None, repeatable=True):
+              uniformity_below=None, covers_open_curves=False, condition=None, capabilities=None):
     """Makes ``function`` a curvebench algorithm; usable as a decorator, with or without arguments."""
     def make(f):
         if isinstance(f, Algorithm):
@@ -156,7 +156,6 @@ def algorithm(function=None, *, name=None, title=None, parameters=None, epsilon_
                           "uniformity_below": _bound(uniformity_below, "uniformity_below"),
                           "covers_open_curves": bool(covers_open_curves)},
             "capabilities": dict(capabilities or {}),
-            "repeatable": bool(repeatable),
         }
         if name is None:
             made = _by_function.get(id(f))
@@ -178,7 +177,7 @@ def algorithm(function=None, *, name=None, title=None, parameters=None, epsilon_
         if "guarantee" in caps:
             caps["guarantee"] = caps["guarantee"] in ("yes", True)
         _core.add_algorithm(chosen, made._invoke, title or getattr(f, "__qualname__", chosen),
-                            description["parameters"], description["condition"], caps, description["repeatable"])
+                            description["parameters"], description["condition"], caps)
         _by_name[chosen] = made
         _by_function[id(f)] = made
         _functions.append(f)

@@ -80,7 +80,6 @@ py::dict describe(const algorithms::Algorithm& a, const char* kind) {
   entry["parameters"] = parameters;
   entry["capabilities"] = capabilities;
   entry["condition"] = condition;
-  entry["repeatable"] = a.repeatable;
   return entry;
 }
 
@@ -136,7 +135,7 @@ py::object reconstruct(const py::handle& given_points, const std::string& name, 
 // The registry's description of a Python algorithm from the package's keyword arguments.
 std::string add_algorithm(const std::string& name, py::object invoke, const std::string& title,
                           const std::vector<py::dict>& parameters, const py::dict& condition,
-                          const std::map<std::string, py::object>& capabilities, bool repeatable) {
+                          const std::map<std::string, py::object>& capabilities) {
   algorithms::Algorithm a;
   a.name = name;
   a.title = title;
@@ -177,7 +176,6 @@ std::string add_algorithm(const std::string& name, py::object invoke, const std:
     else throw std::invalid_argument("capabilities: no '" + key + "' (non_uniform, noise, outliers, manifold, open, multiple, sharp, guarantee)");
   }
   c.guarantee = c.guarantee || a.condition.epsilon_below || a.condition.rho_below;
-  a.repeatable = repeatable;
   return add_python_algorithm(std::move(a), std::move(invoke));
 }
 
@@ -200,7 +198,7 @@ void define_algorithms(py::module_& m) {
   m.def("reconstruct", &reconstruct, py::arg("points"), py::arg("algorithm"), py::arg("parameters"),
         "reconstruct(points, algorithm, parameters): the registry's reconstruct(), the GIL released.");
   m.def("add_algorithm", &add_algorithm, py::arg("name"), py::arg("invoke"), py::arg("title"), py::arg("parameters"),
-        py::arg("condition"), py::arg("capabilities"), py::arg("repeatable"),
+        py::arg("condition"), py::arg("capabilities"),
         "Adds a Python algorithm under `name`; invoke(points, parameters) -> (edges, points or None).");
   m.def("algorithm_exists",
         [](const std::string& name) {

@@ -46,7 +46,7 @@ TEST(AlgorithmFile, ReadsEveryKey) {
   const auto declared = parse_algorithm_file(R"({"algorithms": [
       {"name": "mine", "title": "Mine", "command": "prog {points} {edges} {k}", "input_format": "csv", "index_base": 1,
        "parameters": [{"name": "k", "type": "integer", "default": 2, "min": 1, "max": 8, "meaning": "neighbours"}],
-       "timeout": 2.5, "repeatable": false,
+       "timeout": 2.5,
        "condition": {"statement": "eps < 1/2", "epsilon_below": 0.5, "uniformity_below": 1.6, "rho_below": 0.9}},
       {"name": "plain", "command": "prog {points} {edges}"}]})",
                                              "mine.json");
@@ -61,7 +61,6 @@ TEST(AlgorithmFile, ReadsEveryKey) {
   EXPECT_EQ(d.parameters[0].default_value, 2);
   EXPECT_EQ(d.parameters[0].maximum, 8);
   EXPECT_EQ(d.timeout_seconds, 2.5);
-  EXPECT_FALSE(d.repeatable);
   EXPECT_EQ(d.condition, "eps < 1/2");
   EXPECT_EQ(d.epsilon_below, 0.5);
   EXPECT_EQ(d.uniformity_below, 1.6);
@@ -70,7 +69,6 @@ TEST(AlgorithmFile, ReadsEveryKey) {
   const External_declaration& plain = declared[1];
   EXPECT_EQ(plain.input_format, External_declaration::Point_format::xy);
   EXPECT_EQ(plain.index_base, 0);
-  EXPECT_TRUE(plain.repeatable);
   EXPECT_FALSE(plain.timeout_seconds);
   EXPECT_FALSE(plain.epsilon_below);
 }
@@ -88,7 +86,11 @@ TEST(AlgorithmFile, EachBadDeclarationNamesTheFileAndTheCulprit) {
       {R"({"algorithms": [{"name": "x", "command": "p", "index_base": 2}]})", "\"index_base\" is 0 or 1"},
       {R"({"algorithms": [{"name": "x", "command": "p", "input_format": "tsv"}]})", "\"input_format\" is xy or csv"},
       {R"({"algorithms": [{"name": "x", "command": "p", "timeout": "60"}]})", "\"timeout\" must be a number"},
-      {R"({"algorithms": [{"name": "x", "command": "p", "repeatable": 1}]})", "\"repeatable\" must be true or false"},
+      // Every algorithm gives the same output for the same input: a file that says otherwise,
+      // or says so, is told why the key went.
+      {R"({"algorithms": [{"name": "x", "command": "p", "repeatable": false}]})",
+       "algorithm 'x': \"repeatable\" is no longer a key: every algorithm must give the same output for the same input"},
+      {R"({"algorithms": [{"name": "x", "command": "p", "repeatable": true}]})", "\"repeatable\" is no longer a key"},
       {R"({"algorithms": [{"name": "x", "command": "p", "parameters": [{"name": "k", "default": 1}]}]})",
        "parameter 1: a parameter needs \"default\", \"min\" and \"max\""},
       {R"({"algorithms": [{"name": "x", "command": "p", "parameters": [{"name": "k", "type": "int", "default": 1, "min": 0, "max": 2}]}]})",
