@@ -3,7 +3,7 @@
 # `curvebench rate -o`) run twice on this machine: locally with -j 2, and through Slurm as
 # an array of TASKS tasks on a one-node cluster started here as the test does
 # (tests/cli/slurm_cluster.sh; needs root, slurm-wlm and munge). Prints both wall times and
-# checks that the two tables and results.csv agree, runtimes aside.
+# checks that the two tables and results.csv agree, runtimes aside (scripts/compare_results.py).
 #   scripts/slurm_glyph_sweep.sh [DIR]     (default out/glyph-sweep; written anew)
 # Environment: EPSILON (0.4), TASKS (8), STRIDE (1: every glyph; 100 for a quick try).
 set -euo pipefail
@@ -30,18 +30,7 @@ while scontrol show job -o "$merge" | grep -Eq 'JobState=(PENDING|RUNNING|CONFIG
 slurm_seconds=$((SECONDS - start))
 scontrol show job -o "$merge" | grep -q JobState=COMPLETED || { echo "the merge job failed: see $dir/slurm/slurm/logs" >&2; exit 1; }
 
-# Rows equal but for the runtimes; Optimal Transport is not repeatable (CGAL breaks its cost
-# ties by memory address), so its rows may differ between any two runs and are only counted.
-same_rows() {
-  /usr/bin/python3 -c '
-import collections, csv, sys
-a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:])
-strip = lambda r: {k: v for k, v in r.items() if k != "runtime_ms"}
-differ = collections.Counter(x["algorithm"] for x, y in zip(a, b) if strip(x) != strip(y))
-print("rows that differ, runtimes aside:", dict(differ) or "none", "of", len(a))
-sys.exit(len(a) != len(b) or any(k != "optimal-transport" for k in differ))' "$dir/local/results.csv" "$dir/slurm/results.csv"
-}
 diff "$dir/local.txt" "$dir/slurm/rate.txt" && echo "the same table"
-same_rows && echo "the same rows but for Optimal Transport's, runtimes aside"
+/usr/bin/python3 "$root/scripts/compare_results.py" "$dir/local/results.csv" "$dir/slurm/results.csv"
 cat "$dir/local.txt"
 echo "glyphs every $stride at epsilon $epsilon: locally -j 2: $local_seconds s; Slurm, $tasks tasks of 1 CPU on $(nproc) cores: $slurm_seconds s"

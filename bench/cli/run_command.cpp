@@ -1,5 +1,6 @@
 #include "bench/cli/run_command.h"
 
+#include <cstdint>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -20,6 +21,8 @@ struct Run_command_options {
   std::vector<std::string> algorithms;  // as given: NAME,NAME,... or one exec:COMMAND each
   std::string shard, pictures = "some";
   bool no_report = false, quiet = false;
+  std::uint64_t shuffle_seed = 0;
+  CLI::Option* shuffle = nullptr;  // given: run.shuffle_seed is shuffle_seed
 };
 
 const std::map<std::string, bench::Pictures> picture_modes{{"some", bench::Pictures::some},
@@ -36,6 +39,7 @@ void run(Run_command_options& o) {
   o.run.pictures = picture_modes.at(o.pictures);
   o.run.report = !o.no_report;
   o.run.progress = !o.quiet;
+  if (o.shuffle->count() > 0) o.run.shuffle_seed = o.shuffle_seed;
   const bench::Run_summary s = bench::run_suite(o.run);
   std::cerr << "run " << o.run.suite;
   if (o.run.shards > 1) std::cerr << " shard " << o.run.shard << '/' << o.run.shards;
@@ -73,6 +77,10 @@ void add_run_commands(CLI::App& app) {
       ->capture_default_str();
   command->add_flag("--no-report", o->no_report, "Do not write report.html and charts");
   command->add_flag("-q,--quiet", o->quiet, "No progress output");
+  o->shuffle = command->add_option(
+      "--shuffle-points", o->shuffle_seed,
+      "Give each algorithm its input points in an order drawn from SEED (and the job), mapping its edges back: the "
+      "rows must not change (an algorithm that returns points of its own gets the input as made)");
   command->callback([o] { run(*o); });
 
   auto merge_inputs = std::make_shared<std::vector<std::filesystem::path>>();

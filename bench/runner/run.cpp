@@ -15,7 +15,9 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <optional>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -106,12 +108,46 @@ Result_row input_row(const Job& job, const Suite_case& c, const Bench_input& inp
   return row;
 }
 
+// A permutation of 0 ... n - 1 drawn by Fisher-Yates from std::mt19937_64, whose output the
+// standard fixes (std::shuffle's use of it is each library's own): the same order on every
+// machine.
+std::vector<std::size_t> drawn_order(std::size_t n, std::uint64_t seed) {
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937_64 engine(seed);
+  for (std::size_t i = n; i > 1; --i) std::swap(order[i - 1], order[engine() % i]);
+  return order;
+}
+
+// `algorithm` on the input in the order Run_options::shuffle_seed draws for this job, its
+// edges in the input's indices: the registry gives a merged duplicate's edges to the first
+// copy it meets, which the shuffle changes, so each end goes to the input's first copy.
+algorithms::Reconstruction reconstruct_shuffled(const algorithms::Algorithm& algorithm, std::span<const Point> input,
+                                                std::uint64_t seed, std::size_t job) {
+  const std::vector<std::size_t> order = drawn_order(input.size(), seed ^ (job * 0x9E3779B97F4A7C15ull));
+  std::vector<Point> shuffled;
+  shuffled.reserve(input.size());
+  for (const std::size_t i : order) shuffled.push_back(input[i]);
+  algorithms::Reconstruction result = algorithms::reconstruct(algorithm, shuffled);
+  if (!result.points.empty()) return algorithms::reconstruct(algorithm, input);
+  std::vector<std::size_t> by_place(input.size()), first_copy(input.size());
+  std::iota(by_place.begin(), by_place.end(), std::size_t{0});
+  std::ranges::stable_sort(by_place, [&](std::size_t a, std::size_t b) { return input[a] < input[b]; });
+  for (std::size_t k = 0; k < by_place.size(); ++k)
+    first_copy[by_place[k]] = k > 0 && input[by_place[k]] == input[by_place[k - 1]] ? first_copy[by_place[k - 1]] : by_place[k];
+  for (Edge& edge : result.edges) edge = {first_copy[order[edge.first]], first_copy[order[edge.second]]};
+  result.edges = geometry::canonical_edges(std::move(result.edges));
+  return result;
+}
+
 // Runs in a worker process: the job's row, as a CSV line.
 std::string run_job(const Job& job, const Suite_case& c, const Bench_input& input, const Run_options& options) {
   Result_row row = input_row(job, c, input);
   try {
     const auto start = Clock::now();
-    const algorithms::Reconstruction result = algorithms::reconstruct(*job.algorithm, input.points);
+    const algorithms::Reconstruction result =
+        options.shuffle_seed ? reconstruct_shuffled(*job.algorithm, input.points, *options.shuffle_seed, job.number)
+                             : algorithms::reconstruct(*job.algorithm, input.points);
     const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
     const bool on_input_points = result.points.empty();
     const std::span<const Point> points = on_input_points ? std::span<const Point>(input.points) : result.points;

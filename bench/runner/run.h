@@ -17,7 +17,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -48,6 +50,12 @@ struct Run_options {
   Pictures pictures = Pictures::some;  // which jobs get a picture
   bool report = true;                  // write the report at the end (make_report)
   bool progress = true;                // show progress on stderr
+  // Set: each job's algorithm gets its input points in an order drawn from this seed and
+  // the job's number, and its edges are mapped back to the input's indices (duplicates to
+  // their first occurrence), so that the row is the unshuffled one's if the algorithm does
+  // not depend on the order. An algorithm that returns points of its own has no input
+  // indices to map back: it runs on the input as made. A check (the determinism test).
+  std::optional<std::uint64_t> shuffle_seed = {};
 };
 
 // What a run did, counted by job status.

@@ -239,6 +239,28 @@ const std::vector<Suite>& table() {
        .inputs = {"circle:r=1|epsilon={}"},
        .variable = "epsilon",
        .levels = {"0.1", "0.6"}},
+      // Every kind of input the experiments make, one or two of each, and more sources than
+      // two batches of a two-worker run (run.cpp makes 8 per worker at a time, in this
+      // process, before forking the workers): the determinism test runs it three ways.
+      {.name = "determinism",
+       .description = "For tests: one or two inputs of every experiment (30 sources: sampled, noisy, with outliers, "
+                      "open, several curves, crossings, corners, drawings, glyphs, the bundled point sets, 1,000 "
+                      "points), each once",
+       .inputs = {"svg:data/svg/simple.svg|epsilon=0.3", "fourier:seed=1,harmonics=3|epsilon=0.25",
+                  "fourier:seed=2|epsilon=0.5", "fourier:seed=3,harmonics=8,amplitude=0.5,decay=1.5|epsilon=0.75",
+                  "fourier:seed=4|epsilon=0.3|noise=0.01|seed=1", "fourier:seed=5|epsilon=0.3|lfs-noise=0.33|seed=1",
+                  "fourier:seed=6|epsilon=0.2|lfs-noise=0.33|seed=1", "fourier:seed=7|epsilon=0.3|outliers=10|seed=1",
+                  "fourier:seed=1,gap=0.1|epsilon=0.2", "fourier:seed=2,gap=0.5|epsilon=0.4", "spiral:seed=1|epsilon=0.2",
+                  "nested:seed=1,separation=0.04|per-circle=64",
+                  "fourier:seed=1,components=2,separation=0.02|per-circle=64",
+                  "lissajous:a=1,b=2,seed=1|per-circle=100|crossings=1",
+                  "lissajous:a=2,b=3,seed=1|per-circle=100|crossings=0", "star:seed=1,angle=30|per-circle=32",
+                  "star:seed=2,angle=60,rounding=0.05|per-circle=32", "corner:angle=20|per-circle=16",
+                  "fourier:seed=8,harmonics=8,amplitude=0.6,decay=1|epsilon=0.6", "svg:data/svg/f4.svg|epsilon=0.3",
+                  "svg:data/svg/Snail.svg|epsilon=0.3", "glyph:B|epsilon=0.3", "glyph:%|epsilon=0.4",
+                  "glyph:x|epsilon=0.6", "file:data/hnncrust/mushroom.p2d", "file:data/stretchdenoise/Keyboard0.txt",
+                  "file:data/stretchdenoise/stair.xy", "file:data/stretchdenoise/apple_2percent_noise.txt",
+                  "file:data/hnncrust/crocodile-conf.p2d|outliers=5|seed=2", "fourier:seed=9|uniform=1000"}},
       {.name = "default",
        .description = "The main job, under 5 minutes on 2 cores: every experiment but the glyphs, 30 instances a cell",
        .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "open-curves", "multiple-curves",
