@@ -62,15 +62,25 @@ struct Sampling_condition {
 // determinism test compare runs, and a merged or resumed run is one run only then.
 using Reconstruct = std::function<Reconstruction(std::span<const Point>, const Parameter_values&)>;
 
+// Runs `edges_of` on `points` sorted by x, then y, and names the ends of its edges by their
+// index in `points`: a tie the function breaks by index is then broken by coordinates, so
+// its result cannot follow the order the points came in.
+std::vector<Edge> edges_in_lexicographic_order(std::span<const Point> points,
+                                               const std::function<std::vector<Edge>(std::span<const Point>)>& edges_of);
+
 // The registry's call for an algorithm whose result is edges on its input points:
-// `f(points)` for one without parameters, `f(points, values)` for one with.
+// `f(points)` for one without parameters, `f(points, values)` for one with. `f` sees the
+// points sorted (edges_in_lexicographic_order), so its index ties are coordinate ties.
 template <class F>
 Reconstruct edges_on_input(F f) {
   return [f](std::span<const Point> points, const Parameter_values& values) {
-    if constexpr (std::is_invocable_v<const F&, std::span<const Point>>)
-      return Reconstruction{f(points), {}};
-    else
-      return Reconstruction{f(points, values), {}};
+    return Reconstruction{edges_in_lexicographic_order(points, [&](std::span<const Point> sorted) -> std::vector<Edge> {
+                            if constexpr (std::is_invocable_v<const F&, std::span<const Point>>)
+                              return f(sorted);
+                            else
+                              return f(sorted, values);
+                          }),
+                          {}};
   };
 }
 

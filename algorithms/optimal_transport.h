@@ -72,7 +72,7 @@ Reconstruction optimal_transport_reconstruction(std::span<const Point> points,
 // The total transport cost of the plan the simplification ended with, and its vertex
 // count: for tests and benchmarks that compare costs at equal output size.
 struct Optimal_transport_run {
-  Reconstruction reconstruction;
+  Reconstruction reconstruction;  // as optimal_transport_reconstruction returns it
   double cost = 0;              // in the input's squared units
   std::size_t vertices = 0;     // triangulation vertices left (with or without mass)
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <mutex>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -176,6 +177,24 @@ const Algorithm* find_algorithm(std::string_view name) {
   algorithm.name = texts.emplace_back(name);
   algorithm.title = texts.emplace_back(std::string(base->title) + " + outlier filter");
   return &filtered.emplace_back(std::move(algorithm));
+}
+
+std::vector<Edge> edges_in_lexicographic_order(std::span<const Point> points,
+                                               const std::function<std::vector<Edge>(std::span<const Point>)>& edges_of) {
+  std::vector<std::size_t> by_place(points.size());
+  std::iota(by_place.begin(), by_place.end(), std::size_t{0});
+  std::ranges::stable_sort(by_place, [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  std::vector<Point> sorted;
+  sorted.reserve(points.size());
+  for (const std::size_t i : by_place) sorted.push_back(points[i]);
+  std::vector<Edge> edges = edges_of(sorted);
+  for (Edge& edge : edges) {
+    if (std::max(edge.first, edge.second) >= sorted.size())
+      throw std::logic_error("an algorithm returned an edge to point " + std::to_string(std::max(edge.first, edge.second)) +
+                             " of " + std::to_string(sorted.size()));
+    edge = {by_place[edge.first], by_place[edge.second]};
+  }
+  return edges;
 }
 
 Reconstruction reconstruct(const Algorithm& algorithm, std::span<const Point> points, const Parameter_values& values) {

@@ -21,7 +21,8 @@ struct Evaluation {
   // A simplifier's output (its edges and isolated vertices) against the original, each of
   // the survey's two mappings alone ("Evaluation Criteria": D from the output, D' from the
   // curve); none for an interpolating algorithm or without an original.
-  std::optional<geometry::Curve_distance> to_curve, from_curve;
+  std::optional<geometry::Curve_distance> to_curve;    // D: from the output to the curve
+  std::optional<geometry::Curve_distance> from_curve;  // D': from the curve to the output
 };
 
 // `reconstruction`'s and `truth`'s edges are canonical. `on_input_points`: the

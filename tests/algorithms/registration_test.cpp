@@ -30,7 +30,10 @@ const Registration toy{{
     .parameters = {},
     .capabilities = {},
     .condition = {},
-    .reconstruct = edges_on_input(polygon_in_input_order),
+    // Not edges_on_input, which would hand it the points sorted: the toy reads their order.
+    .reconstruct = [](std::span<const Point> points, const Parameter_values&) {
+      return Reconstruction{polygon_in_input_order(points), {}};
+    },
 }};
 
 TEST(Registration, StandsAfterTheBuiltInsAndIsFoundByName) {
