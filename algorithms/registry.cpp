@@ -194,7 +194,7 @@ std::vector<Edge> edges_in_lexicographic_order(std::span<const Point> points,
                              " of " + std::to_string(sorted.size()));
     edge = {by_place[edge.first], by_place[edge.second]};
   }
-  return edges;
+  return geometry::canonical_edges(std::move(edges));
 }
 
 Reconstruction reconstruct(const Algorithm& algorithm, std::span<const Point> points, const Parameter_values& values) {
