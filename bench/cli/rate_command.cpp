@@ -82,7 +82,8 @@ void rate_curve(const std::string& spec, const Rate_options& options,
 }
 
 // exact[a][e] of sampled[a][e] curves, per algorithm a and epsilon e, as a table on
-// stdout; "-" where an algorithm had none (a shard may hold no job of it).
+// stdout; "-" where an algorithm had none (a shard may hold no job of it), and no rate
+// for a simplifier, whose output is never the interpolating truth (as in the report).
 void print_table(std::size_t curves, const Rate_options& options, const std::vector<const algorithms::Algorithm*>& chosen,
                  const std::vector<std::vector<std::size_t>>& exact, const std::vector<std::vector<std::size_t>>& sampled) {
   std::cout << "Exact reconstructions of " << curves << " curves (" << options.curves.front()
@@ -95,6 +96,7 @@ void print_table(std::size_t curves, const Rate_options& options, const std::vec
     for (std::size_t e = 0; e < options.epsilons.size(); ++e) {
       std::ostringstream cell;
       if (sampled[a][e] == 0) cell << "-";
+      else if (chosen[a]->simplifies) cell << "n/a (simplifies)";
       else cell << std::fixed << std::setprecision(1) << 100.0 * exact[a][e] / sampled[a][e] << "% (" << exact[a][e] << ")";
       std::cout << std::setw(18) << cell.str();
     }

@@ -29,6 +29,12 @@ check "duplicates: exit 0" test $? -eq 0
 check "duplicates: one note naming both lines" grep -q "dup.xy:3: duplicate of the point on line 1, merged" "$work/err"
 check "duplicates: edges in input indices" diff <(printf '0 1\n0 3\n') "$work/dup.edges"
 
+# rate: a simplifier gets no exact rate (its output is never the interpolating truth),
+# an interpolating algorithm its percentage.
+"$curvebench" rate -c ellipse:a=2,b=1 -e 0.3 -a nn-crust,optimal-transport >"$work/rate.txt" 2>&1
+check "rate: Optimal Transport is n/a, as a simplifier" grep -q "^optimal-transport *n/a (simplifies)" "$work/rate.txt"
+check "rate: NN-Crust has its rate" grep -q "^nn-crust *100.0% (1)" "$work/rate.txt"
+
 # Files as users have them: the same points with a UTF-8 byte-order mark, and as a CSV
 # with a header line (x,y; pandas' unnamed index column), reconstruct to the plain file's edges.
 "$curvebench" sample --curve ellipse:a=2,b=1 --epsilon 0.3 --safe -o "$work/plain" >/dev/null
