@@ -233,8 +233,14 @@ class Simplification {
       if (options.tolerance > 0 && total_cost_ + next.cost_change > budget) break;
       queue_.pop();
       remove(next.vertex);
+      if (isolated_ < fewest_isolated_) fewest_isolated_ = isolated_, vertices_at_fewest_ = alive_count_;
     }
   }
+
+  // Of the states run() passed through, the vertex count of the first with the fewest
+  // isolated vertices.
+  std::size_t vertices_at_fewest_isolated() const { return vertices_at_fewest_; }
+  bool has_isolated_vertex() const { return isolated_ > 0; }
 
   // The output: the regular edges and the vertices with mass, in index order.
   Reconstruction result() const {
@@ -500,6 +506,8 @@ class Simplification {
   std::vector<Queue::handle_type> handles_;
   std::size_t alive_count_ = 0;
   std::ptrdiff_t isolated_ = 0;  // vertices with mass on no regular edge
+  std::ptrdiff_t fewest_isolated_ = std::numeric_limits<std::ptrdiff_t>::max();
+  std::size_t vertices_at_fewest_ = 0;
   double total_cost_ = 0;
 
   // Scratch space, kept between calls.
@@ -538,6 +546,15 @@ Optimal_transport_run optimal_transport_run(std::span<const Point> input, const 
 
   Simplification simplification(points, masses);
   simplification.run(options);
+  if (options.vertices == 0 && options.tolerance == 0 && simplification.has_isolated_vertex() &&
+      simplification.vertices_at_fewest_isolated() > 0) {
+    // No state left every vertex on an edge: run again to the one with the fewest isolated
+    // vertices (the same greedy order, so the same state), rather than end with the last
+    // two vertices and a ghost edge between them.
+    Simplification again(points, masses);
+    again.run({.vertices = simplification.vertices_at_fewest_isolated()});
+    return {again.result(), again.cost(), again.vertices()};
+  }
   return {simplification.result(), simplification.cost(), simplification.vertices()};
 }
 
