@@ -51,11 +51,11 @@ namespace curvebench::algorithms {
 // on a regular edge: no isolated vertex. (The greedy order begins at cost 0 with every
 // sample at its own vertex, all isolated; each removal spreads samples onto edges.) On
 // noise-free closed curves this leaves about a seventh of the points, and often one
-// short ghost edge (a gap) between two vertices of the polygon. Where no step leaves every
-// vertex on an edge (coarse samplings of wiggly curves), it returns the first step with
-// the fewest isolated vertices, found by running twice: stopping only where no
+// short ghost edge (a gap) between two vertices of the polygon; stopping only where no
 // edge carries samples to its ends closes the polygon but leaves 3 to 8 vertices, too
-// coarse. The rule is still being tuned (issue 41).
+// coarse. Where no step leaves every vertex on an edge (coarse samplings of wiggly
+// curves), it returns the first step with the fewest isolated vertices, found by running
+// twice. The rule is still being tuned (issue 41).
 struct Optimal_transport_options {
   // Stop when this many vertices remain (0: unset).
   std::size_t vertices = 0;
