@@ -32,6 +32,7 @@
 #include "bench/runner/suite.h"
 #include "certify/theorems.h"
 #include "geometry/io/svg_picture.h"
+#include "geometry/point_set.h"
 
 namespace curvebench::bench {
 namespace {
@@ -130,12 +131,9 @@ algorithms::Reconstruction reconstruct_shuffled(const algorithms::Algorithm& alg
   for (const std::size_t i : order) shuffled.push_back(input[i]);
   algorithms::Reconstruction result = algorithms::reconstruct(algorithm, shuffled);
   if (!result.points.empty()) return algorithms::reconstruct(algorithm, input);
-  std::vector<std::size_t> by_place(input.size()), first_copy(input.size());
-  std::iota(by_place.begin(), by_place.end(), std::size_t{0});
-  std::ranges::stable_sort(by_place, [&](std::size_t a, std::size_t b) { return input[a] < input[b]; });
-  for (std::size_t k = 0; k < by_place.size(); ++k)
-    first_copy[by_place[k]] = k > 0 && input[by_place[k]] == input[by_place[k - 1]] ? first_copy[by_place[k - 1]] : by_place[k];
-  for (Edge& edge : result.edges) edge = {first_copy[order[edge.first]], first_copy[order[edge.second]]};
+  const geometry::PointSet merged(std::vector<Point>(input.begin(), input.end()));
+  const auto first_copy = [&](std::size_t i) { return merged.input_index(merged.kept_index(i)); };
+  for (Edge& edge : result.edges) edge = {first_copy(order[edge.first]), first_copy(order[edge.second])};
   result.edges = geometry::canonical_edges(std::move(result.edges));
   return result;
 }
