@@ -3,13 +3,16 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -19,12 +22,14 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Child {
-  std::size_t task;
+// A worker process as the parent sees it. An answer is its length (8 bytes, native order:
+// both ends are this program) and then its bytes.
+struct Worker {
   pid_t pid;
-  int pipe;  // read end
-  Clock::time_point deadline;
-  std::string output;
+  int socket;                        // the parent's end
+  std::optional<std::size_t> task{};  // the task it runs, if any
+  Clock::time_point deadline = Clock::time_point::max();
+  std::string answer{};              // what it has sent of its answer so far
 };
 
 Fork_hooks& hooks() {
@@ -40,32 +45,59 @@ std::function<void()>& interruption_check() {
 // The longest wait between two interruption checks.
 constexpr int check_interval_ms = 100;
 
-// Kills and reaps the children still running when run_in_processes leaves by an exception
-// (an interruption, a failed fork, a `done` that threw), so that none works on unseen.
+void reap(pid_t pid, int* status = nullptr) {
+  while (waitpid(pid, status, 0) < 0 && errno == EINTR) {
+  }
+}
+
+// Kills and reaps the workers still running when run_in_processes leaves, by an exception
+// (an interruption, a failed fork, a `done` that threw) or not, so that none works on unseen.
 struct Reaper {
-  std::vector<Child>& running;
+  std::vector<Worker>& workers;
   ~Reaper() {
-    for (const Child& child : running) {
-      kill(child.pid, SIGKILL);
-      close(child.pipe);
-      while (waitpid(child.pid, nullptr, 0) < 0 && errno == EINTR) {
-      }
+    for (const Worker& worker : workers) {
+      kill(worker.pid, SIGKILL);
+      close(worker.socket);
+      reap(worker.pid);
     }
   }
 };
 
-[[noreturn]] void run_child(std::size_t task, int pipe, const Process_pool_options& options,
-                            const std::function<std::string(std::size_t)>& run) {
+// send() with MSG_NOSIGNAL: a peer that died is an error to handle, not a SIGPIPE that
+// ends this process.
+bool send_all(int socket, const void* data, std::size_t size) {
+  const char* bytes = static_cast<const char*>(data);
+  for (std::size_t sent = 0; sent < size;) {
+    const ssize_t n = send(socket, bytes + sent, size - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    sent += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+bool receive_all(int socket, void* data, std::size_t size) {
+  char* bytes = static_cast<char*>(data);
+  for (std::size_t got = 0; got < size;) {
+    const ssize_t n = recv(socket, bytes + got, size - got, 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    got += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// The worker's loop: a task's index in, its answer out, until the parent closes its end.
+[[noreturn]] void serve(int socket, const Process_pool_options& options,
+                        const std::function<std::string(std::size_t)>& run) {
   if (options.memory_limit_bytes > 0) {
     const rlimit limit{options.memory_limit_bytes, options.memory_limit_bytes};
     setrlimit(RLIMIT_AS, &limit);
   }
-  const std::string output = run(task);
-  for (std::size_t sent = 0; sent < output.size();) {
-    const ssize_t n = write(pipe, output.data() + sent, output.size() - sent);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) _exit(3);
-    sent += static_cast<std::size_t>(n);
+  for (std::uint64_t task = 0; receive_all(socket, &task, sizeof task);) {
+    const std::string output = run(task);
+    const std::uint64_t size = output.size();
+    if (!send_all(socket, &size, sizeof size) || !send_all(socket, output.data(), output.size())) _exit(3);
   }
   _exit(0);
 }
@@ -85,6 +117,15 @@ std::string time_limit_text(double seconds) {
   return text;
 }
 
+// The whole answer in `received`, if it has come.
+std::optional<std::string> complete_answer(std::string& received) {
+  std::uint64_t size = 0;
+  if (received.size() < sizeof size) return std::nullopt;
+  std::memcpy(&size, received.data(), sizeof size);
+  if (received.size() - sizeof size < size) return std::nullopt;
+  return received.substr(sizeof size);
+}
+
 }  // namespace
 
 Fork_hooks set_fork_hooks(Fork_hooks replacement) { return std::exchange(hooks(), std::move(replacement)); }
@@ -96,57 +137,81 @@ std::function<void()> set_interruption_check(std::function<void()> check) {
 void run_in_processes(std::size_t count, const Process_pool_options& options,
                       const std::function<std::string(std::size_t)>& task,
                       const std::function<void(std::size_t, Task_outcome)>& done) {
-  std::vector<Child> running;
-  const Reaper reaper{running};
+  std::vector<Worker> workers;
+  const Reaper reaper{workers};
   const std::function<void()>& check = interruption_check();
-  std::size_t next = 0;
+  std::size_t next = 0;  // the first task not yet sent
   const auto timeout = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.timeout_seconds));
-  const auto finish = [&](std::size_t k, Task_outcome outcome) {
-    Child child = std::move(running[k]);
-    running.erase(running.begin() + static_cast<std::ptrdiff_t>(k));
-    close(child.pipe);
+
+  const auto start_worker = [&] {
+    int ends[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
+      throw std::system_error(errno, std::generic_category(), "socketpair");
+    std::fflush(nullptr);  // or the worker would flush the parent's buffered output again
+    const Fork_hooks& around = hooks();
+    if (around.before) around.before();
+    const pid_t pid = fork();
+    const int fork_error = errno;
+    if (pid != 0 && around.after_parent) around.after_parent();
+    if (pid < 0) {
+      close(ends[0]), close(ends[1]);
+      throw std::system_error(fork_error, std::generic_category(), "fork");
+    }
+    if (pid == 0) {
+      if (around.after_child) around.after_child();
+      close(ends[0]);
+      // A sibling must see the end of its tasks when the parent closes its socket, so no
+      // other process may hold that socket open.
+      for (const Worker& other : workers) close(other.socket);
+      serve(ends[1], options, task);
+    }
+    close(ends[1]);
+    workers.push_back({.pid = pid, .socket = ends[0]});
+  };
+  // Gives worker k the next task; without one, closes its socket, which ends it.
+  const auto send_next = [&](std::size_t k) {
+    Worker& worker = workers[k];
+    if (next == count) {
+      close(worker.socket);
+      reap(worker.pid);
+      workers.erase(workers.begin() + static_cast<std::ptrdiff_t>(k));
+      return;
+    }
+    const std::uint64_t index = next;
+    worker.task = next++;
+    worker.deadline = options.timeout_seconds > 0 ? Clock::now() + timeout : Clock::time_point::max();
+    worker.answer.clear();
+    // A worker that died between two tasks fails this send; poll then sees its socket's
+    // end, and the task counts as crashed with the worker's exit status.
+    send_all(worker.socket, &index, sizeof index);
+  };
+  // Worker k's task ended without an answer: the worker is killed (if it still runs),
+  // reaped and replaced while tasks are left.
+  const auto lose = [&](std::size_t k, Task_outcome outcome) {
+    Worker worker = std::move(workers[k]);
+    workers.erase(workers.begin() + static_cast<std::ptrdiff_t>(k));
+    if (outcome.kind == Task_outcome::Kind::timed_out) kill(worker.pid, SIGKILL);
+    close(worker.socket);
     int status = 0;
-    if (outcome.kind == Task_outcome::Kind::timed_out) kill(child.pid, SIGKILL);
-    while (waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
+    reap(worker.pid, &status);
+    if (outcome.kind == Task_outcome::Kind::crashed) outcome.reason = describe(status);
+    if (next < count) {
+      start_worker();
+      send_next(workers.size() - 1);
     }
-    if (outcome.kind == Task_outcome::Kind::finished) {
-      if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !child.output.empty())
-        outcome.output = std::move(child.output);
-      else
-        outcome = {Task_outcome::Kind::crashed, "", describe(status)};
-    }
-    done(child.task, std::move(outcome));
+    done(*worker.task, std::move(outcome));
   };
 
-  while (next < count || !running.empty()) {
-    while (next < count && running.size() < std::max<std::size_t>(options.workers, 1)) {
-      int fds[2];
-      if (pipe(fds) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
-      std::fflush(nullptr);  // or the child would flush the parent's buffered output again
-      const Fork_hooks& around = hooks();
-      if (around.before) around.before();
-      const pid_t pid = fork();
-      const int fork_error = errno;
-      if (pid != 0 && around.after_parent) around.after_parent();
-      if (pid < 0) {
-        close(fds[0]), close(fds[1]);
-        throw std::system_error(fork_error, std::generic_category(), "fork");
-      }
-      if (pid == 0) {
-        if (around.after_child) around.after_child();
-        close(fds[0]);
-        for (const Child& other : running) close(other.pipe);
-        run_child(next, fds[1], options, task);
-      }
-      close(fds[1]);
-      running.push_back({next++, pid, fds[0], options.timeout_seconds > 0 ? Clock::now() + timeout : Clock::time_point::max(), {}});
-    }
-
+  for (std::size_t k = 0; k < std::min(std::max<std::size_t>(options.workers, 1), count); ++k) {
+    start_worker();
+    send_next(k);
+  }
+  while (!workers.empty()) {
     std::vector<pollfd> polled;
     auto wait = Clock::duration::max();
-    for (const Child& child : running) {
-      polled.push_back({child.pipe, POLLIN, 0});
-      wait = std::min(wait, child.deadline - Clock::now());
+    for (const Worker& worker : workers) {
+      polled.push_back({worker.socket, POLLIN, 0});
+      wait = std::min(wait, worker.deadline - Clock::now());
     }
     int wait_ms = wait == Clock::duration::max()
                       ? -1
@@ -157,20 +222,26 @@ void run_in_processes(std::size_t count, const Process_pool_options& options,
       throw std::system_error(errno, std::generic_category(), "poll");
     if (check) check();  // an interrupt seen by poll (EINTR) is seen here at once
 
-    // Backwards, so that finishing a child does not move the ones still to look at.
-    for (std::size_t k = running.size(); k-- > 0;) {
+    // Backwards, so that removing a worker does not move the ones still to look at (a
+    // replacement goes to the back, unpolled this round).
+    for (std::size_t k = polled.size(); k-- > 0;) {
+      Worker& worker = workers[k];
       if (polled[k].revents != 0) {
         char buffer[65536];
-        const ssize_t n = read(running[k].pipe, buffer, sizeof buffer);
-        if (n > 0) {
-          running[k].output.append(buffer, static_cast<std::size_t>(n));
+        const ssize_t n = recv(worker.socket, buffer, sizeof buffer, 0);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+          lose(k, {Task_outcome::Kind::crashed, "", ""});  // the end of its socket: it died
           continue;
         }
-        if (n < 0 && errno == EINTR) continue;
-        finish(k, {});  // end of file: the child is done
-      } else if (Clock::now() >= running[k].deadline) {
-        finish(k, {Task_outcome::Kind::timed_out, "",
-                   time_limit_text(options.timeout_seconds)});
+        worker.answer.append(buffer, static_cast<std::size_t>(n));
+        if (std::optional<std::string> answer = complete_answer(worker.answer)) {
+          const std::size_t finished = *worker.task;
+          send_next(k);
+          done(finished, {Task_outcome::Kind::finished, std::move(*answer), ""});
+        }
+      } else if (Clock::now() >= worker.deadline) {
+        lose(k, {Task_outcome::Kind::timed_out, "", time_limit_text(options.timeout_seconds)});
       }
     }
   }

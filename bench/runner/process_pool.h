@@ -1,12 +1,20 @@
-// Runs tasks each in a child process of its own, a few at a time, so that a task that
-// crashes (a segfault, an abort, std::terminate), runs out of memory or exceeds its time
-// limit costs only itself: the caller learns what happened and goes on. Threads could not
-// give that isolation; a crash in a thread ends the whole run.
+// Runs tasks in worker processes, a few at a time, so that a task that crashes (a
+// segfault, an abort, std::terminate), runs out of memory or exceeds its time limit costs
+// only itself: the caller learns what happened and goes on. Threads could not give that
+// isolation; a crash in a thread ends the whole run.
 //
-// Each child runs `task(i)` and sends the string it returns to the parent through a pipe,
-// then leaves with _exit (no atexit handlers, no stdio flush of the parent's buffers).
-// The child must not use threads that the parent started (oneTBB's workers are not copied
-// by fork): tasks are single-threaded.
+// A worker is forked once and runs task after task: the parent sends it a task's index
+// over a socket, it runs `task(i)` and sends back the string it returns. A worker that
+// dies or is killed at the time limit is replaced by a fresh fork for the tasks left.
+// Forking once per task cost more than most tasks (the benchmark's jobs take a few
+// milliseconds; a fork of the runner, with its inputs, and the copy-on-write faults after
+// it took about as long again), so tasks must not depend on state an earlier task of the
+// same worker left: the runner's determinism test (cli.determinism) checks that its jobs
+// do not, by comparing runs with one and two workers.
+//
+// A worker leaves with _exit (no atexit handlers, no stdio flush of the parent's buffers).
+// It must not use threads that the parent started (oneTBB's workers are not copied by
+// fork): tasks are single-threaded.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +25,7 @@ namespace curvebench::bench {
 
 // How one task ended.
 struct Task_outcome {
-  // finished: it returned; crashed: its child died, exited non-zero or sent nothing;
+  // finished: it returned; crashed: its worker died or exited before it returned;
   // timed_out: it was killed at the time limit.
   enum class Kind { finished, crashed, timed_out };
   Kind kind = Kind::finished;  // how it ended
@@ -27,9 +35,9 @@ struct Task_outcome {
 
 // How many children run at once, and the limits of each.
 struct Process_pool_options {
-  std::size_t workers = 1;      // children at once
+  std::size_t workers = 1;      // worker processes at once
   double timeout_seconds = 0;   // per task; 0: none
-  std::size_t memory_limit_bytes = 0;  // address-space limit of each child; 0: none
+  std::size_t memory_limit_bytes = 0;  // address-space limit of each worker; 0: none
 };
 
 // Calls made around each fork() of run_in_processes, for a host process whose own state
@@ -53,10 +61,11 @@ Fork_hooks set_fork_hooks(Fork_hooks hooks);
 // KeyboardInterrupt on Ctrl-C).
 std::function<void()> set_interruption_check(std::function<void()> check);
 
-// Runs task(0) ... task(count - 1); calls done(i, outcome) in the parent as each ends, in
-// the order they end. Throws std::system_error if a pipe or process cannot be made, and
-// passes on what the interruption check or `done` throws; when it throws, the children
-// still running are killed and reaped first, so that none works on unseen.
+// Runs task(0) ... task(count - 1), in that order, in at most options.workers worker
+// processes; calls done(i, outcome) in the parent as each ends, in the order they end.
+// Throws std::system_error if a socket or process cannot be made, and passes on what the
+// interruption check or `done` throws; when it throws, the workers still running are
+// killed and reaped first, so that none works on unseen.
 void run_in_processes(std::size_t count, const Process_pool_options& options,
                       const std::function<std::string(std::size_t)>& task,
                       const std::function<void(std::size_t, Task_outcome)>& done);

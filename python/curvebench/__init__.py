@@ -12,8 +12,7 @@ same results and the same error messages; the C++ runs with the GIL released.
 
 A Python function ``f(points) -> edges`` (or ``-> (edges, points)``) stands wherever an
 algorithm's name does: reconstruct, run, certify, tightness and hunt. The runner calls it
-in its forked worker processes, one per job, so a crash, a hang or an exception costs that
-job only. docs/python.md has the whole story.
+in its forked worker processes, so a crash, a hang or an exception costs that job only. docs/python.md has the whole story.
 """
 import json as _json
 import math as _math
