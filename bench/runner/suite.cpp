@@ -262,7 +262,7 @@ const std::vector<Suite>& table() {
                   "file:data/stretchdenoise/stair.xy", "file:data/stretchdenoise/apple_2percent_noise.txt",
                   "file:data/hnncrust/crocodile-conf.p2d|outliers=5|seed=2", "fourier:seed=9|uniform=1000"}},
       {.name = "default",
-       .description = "The main job, under 5 minutes on 2 cores: every experiment but the glyphs, 30 instances a cell",
+       .description = "The main job, about a minute on 2 cores: every experiment but the glyphs, 30 instances a cell",
        .parts = {"sampling", "noisy", "lfsnoise", "sampling-noise", "outliers", "open-curves", "multiple-curves",
                  "intersecting", "sharp-corners", "rounded-corners", "manifold", "drawings", "qualitative", "runtime",
                  "certify"}},
@@ -273,7 +273,7 @@ const std::vector<Suite>& table() {
                  "qualitative", "runtime", "runtime-large", "certify", "breakdown", "glyphs"}},
       {.name = "full",
        .description = "The generated experiments on 200 instances per cell, for rates with narrow intervals "
-                      "(under an hour on 2 cores; shard it for more)",
+                      "(about 4 minutes on 2 cores; shard it for more)",
        .parts = {"sampling-full", "noisy-full", "lfsnoise-full", "sampling-noise-full", "outliers-full",
                  "open-curves-full", "multiple-curves-full", "intersecting-full", "sharp-corners-full",
                  "rounded-corners-full"}},
