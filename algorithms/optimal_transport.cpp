@@ -206,6 +206,7 @@ void fill_hull_pockets(std::span<const Point> points, std::span<const Index> cha
 struct Edge_plan {
   std::vector<Index> samples;
   double cost = 0;
+  double normal = 0;  // the samples' squared distances to the edge's line, by mass
   bool regular = false;
   bool feeds_first = false, feeds_second = false;  // ghost: the smaller / larger end receives mass
 };
@@ -242,8 +243,15 @@ class Simplification {
   std::size_t vertices_at_fewest_isolated() const { return vertices_at_fewest_; }
   bool has_isolated_vertex() const { return isolated_ > 0; }
 
-  // The output: the regular edges and the vertices with mass, in index order.
-  Reconstruction result() const {
+  // The output: the regular edges and the vertices with mass, in index order. With
+  // `close_gaps` (the default stop), also the gaps: ghost edges between two ends of regular
+  // chains whose samples lie along them, not across (their cost across the edge's line is
+  // at most half their ghost cost), drawn in key order, each end once. At the default stop
+  // a closed curve's polygon often has one such edge, its samples clustered at its two
+  // ends; the chord between the ends of an open arc has its samples across it, the arc
+  // leaving its ends at an angle, and stays undrawn. A comparison of transport costs, as
+  // every choice of the plan is (see the header).
+  Reconstruction result(bool close_gaps) const {
     std::vector<Index> renumbered(points_.size(), none);
     Reconstruction out;
     for (Index v = 0; v < points_.size(); ++v)
@@ -251,8 +259,19 @@ class Simplification {
         renumbered[v] = static_cast<Index>(out.points.size());
         out.points.push_back(points_[v]);
       }
-    for (const auto& [key, plan] : plans_)
+    std::vector<std::uint64_t> gaps;
+    for (const auto& [key, plan] : plans_) {
       if (plan.regular) out.edges.push_back({renumbered[key >> 32], renumbered[key & 0xffffffffu]});
+      else if (close_gaps && !plan.samples.empty() && 2 * plan.normal <= plan.cost) gaps.push_back(key);
+    }
+    std::sort(gaps.begin(), gaps.end());
+    std::vector<int> degree(regular_);
+    for (const std::uint64_t key : gaps) {
+      const Index a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
+      if (degree[a] != 1 || degree[b] != 1) continue;
+      ++degree[a], ++degree[b];
+      out.edges.push_back({renumbered[a], renumbered[b]});
+    }
     out.edges = geometry::canonical_edges(std::move(out.edges));
     return out;
   }
@@ -345,6 +364,7 @@ class Simplification {
       start += width;
     }
     const double regular = normal + tangential;
+    plan.normal = normal;
     plan.regular = regular < ghost;
     plan.cost = plan.regular ? regular : ghost;
     plan.feeds_first = plan.feeds_second = false;
@@ -553,9 +573,10 @@ Optimal_transport_run optimal_transport_run(std::span<const Point> input, const 
     // two vertices and a ghost edge between them.
     Simplification again(points, masses);
     again.run({.vertices = simplification.vertices_at_fewest_isolated()});
-    return {again.result(), again.cost(), again.vertices()};
+    return {again.result(true), again.cost(), again.vertices()};
   }
-  return {simplification.result(), simplification.cost(), simplification.vertices()};
+  const bool default_stop = options.vertices == 0 && options.tolerance == 0;  // which draws gaps
+  return {simplification.result(default_stop), simplification.cost(), simplification.vertices()};
 }
 
 Reconstruction optimal_transport_reconstruction(std::span<const Point> points, const Optimal_transport_options& options) {

@@ -30,7 +30,11 @@
 //    tests runs CGAL without relocation too;
 //  - a ghost edge sends each sample to its nearer end (exact comparison; the smaller index
 //    on a tie);
-//  - the default stop is derived from the input (see Optimal_transport_options).
+//  - the default stop is derived from the input (see Optimal_transport_options), and its
+//    output also draws a ghost edge between two ends of regular chains whose samples lie
+//    along it (their squared distance to its line, by mass, at most half their ghost
+//    cost): a gap in a closed curve, not the chord of an open arc. The plan and its cost
+//    are unchanged; only the drawing closes the gap.
 //
 // Decisions on the triangulation (Delaunay, hole fills, hull) are exact predicates. The
 // transport plan (which edge a sample goes to) and the greedy order are an optimisation
@@ -51,11 +55,14 @@ namespace curvebench::algorithms {
 // on a regular edge: no isolated vertex. (The greedy order begins at cost 0 with every
 // sample at its own vertex, all isolated; each removal spreads samples onto edges.) On
 // noise-free closed curves this leaves about a seventh of the points, and often one
-// short ghost edge (a gap) between two vertices of the polygon; stopping only where no
-// edge carries samples to its ends closes the polygon but leaves 3 to 8 vertices, too
-// coarse. Where no step leaves every vertex on an edge (coarse samplings of wiggly
-// curves), it returns the first step with the fewest isolated vertices, found by running
-// twice. The rule is still being tuned (issue 41).
+// short ghost edge (a gap) between two ends of the polygon's chain, its samples clustered
+// at its ends: the default output draws such an edge where its samples lie along it
+// rather than across it (see the deviations). Stopping only where no edge carries samples
+// to its ends closes the polygon but leaves 3 to 8 vertices, and stopping at the first
+// step whose output is closed curves turns complex outlines into triangles and open arcs
+// into loops: both tried, both too coarse. Where no step leaves every vertex on an edge
+// (coarse samplings of wiggly curves), it returns the first step with the fewest isolated
+// vertices, found by running twice. The rule is still being tuned (issue 41).
 struct Optimal_transport_options {
   // Stop when this many vertices remain (0: unset).
   std::size_t vertices = 0;
