@@ -128,12 +128,16 @@ def voronoi_crossings(spline, u, S):
     i = np.nonzero(nearest != following)[0]
     if len(i) == 0:
         return np.zeros((0, 2))
-    a, b = S[nearest[i]], S[following[i]]
-    u0 = u[i]
     u1 = np.where(i + 1 < len(u), u[(i + 1) % len(u)], 2 * u[-1] - u[-2])
+    return bisector_crossings(spline, S[nearest[i]], S[following[i]], u[i], u1)
+
+
+def bisector_crossings(spline, a, b, u0, u1):
+    """Where the curve crosses the bisector of samples a and b between parameters u0 and u1 (each
+    row one crossing), by three steps of regula falsi."""
     f = lambda w: ((spline(w) - a) ** 2).sum(1) - ((spline(w) - b) ** 2).sum(1)
     f0, f1 = f(u0), f(u1)
-    for _ in range(3):  # regula falsi
+    for _ in range(3):
         w = u0 - f0 * (u1 - u0) / np.where(f1 != f0, f1 - f0, 1)
         fw = f(w)
         keep_left = np.sign(fw) == np.sign(f0)
@@ -161,19 +165,27 @@ def medial_tips(spline, t, per=40):
             continue
         step = np.diff(np.append(u, t[-1]))
         lo, hi = u[peaks] - step[peaks - 1], u[peaks] + step[peaks]
-        g = (math.sqrt(5) - 1) / 2
-        for _ in range(20):
-            a, b = hi - g * (hi - lo), lo + g * (hi - lo)
-            left_higher = side * curvature(a % t[-1]) > side * curvature(b % t[-1])
-            hi, lo = np.where(left_higher, b, hi), np.where(left_higher, lo, a)
-        w = (0.5 * (lo + hi)) % t[-1]
-        kw = side * curvature(w)
-        d1 = spline(w, 1)
-        normal = side * np.stack([-d1[:, 1], d1[:, 0]], axis=1) / np.linalg.norm(d1, axis=1)[:, None]
-        centres = spline(w) + normal / kw[:, None]
-        empty = ((centres[:, None, :] - points[None]) ** 2).sum(-1).min(1) >= (0.999 / kw) ** 2
-        tips.append(centres[empty])
+        tips.append(osculating_centres(spline, curvature, lo, hi, side, points, 20, period=t[-1]))
     return np.ascontiguousarray(np.vstack(tips)) if tips else np.zeros((0, 2))
+
+
+def osculating_centres(spline, curvature, lo, hi, side, points, iterations, period=None):
+    """The centres of curvature at the curvature maxima (of side * curvature) bracketed by [lo, hi],
+    refined by `iterations` golden-section steps (parameters modulo `period` when given), kept where
+    the osculating disk holds none of `points` (within 0.999 of its radius)."""
+    wrap = (lambda w: w % period) if period else (lambda w: w)
+    g = (math.sqrt(5) - 1) / 2
+    for _ in range(iterations):
+        a, b = hi - g * (hi - lo), lo + g * (hi - lo)
+        left_higher = side * curvature(wrap(a)) > side * curvature(wrap(b))
+        hi, lo = np.where(left_higher, b, hi), np.where(left_higher, lo, a)
+    w = wrap(0.5 * (lo + hi))
+    kw = side * curvature(w)
+    d1 = spline(w, 1)
+    normal = side * np.stack([-d1[:, 1], d1[:, 0]], axis=1) / np.linalg.norm(d1, axis=1)[:, None]
+    centres = spline(w) + normal / kw[:, None]
+    empty = ((centres[:, None, :] - points[None]) ** 2).sum(-1).min(1) >= (0.999 / kw) ** 2
+    return centres[empty]
 
 
 def closed_spline(knots, intervals):
