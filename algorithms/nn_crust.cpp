@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -15,6 +16,7 @@
 
 #include "geometry/exact_sign.h"
 #include "graphs/delaunay_triangulation.h"
+#include "graphs/point_kd_tree.h"
 #include "graphs/proximity_predicates.h"
 
 namespace curvebench::algorithms {
@@ -25,12 +27,8 @@ using geometry::squared_distance_approximation;
 using graphs::compare_distances;
 using Index = std::uint32_t;
 
-// CGAL's triangulation itself, not graphs::Delaunay_triangulation (flattening it to
-// neighbour arrays costs a third of the triangulation). The fast path sweeps its faces in
-// memory order, about an eighth of the triangulation's time at 10^6 points; walking around
-// every vertex instead costs three to five times that, the faces around a vertex lying all
-// over memory. Each vertex carries the index of its point and its rank in the (spatially
-// sorted) insertion order, which indexes the arrays of the search.
+// The fallback's structure: CGAL's triangulation itself. Each vertex carries the index of
+// its point and its rank in the insertion order, which indexes the search's marks.
 struct Vertex_info {
   Index index = 0;
   Index id = 0;
@@ -40,8 +38,6 @@ using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<Vertex_info, Ker
 using Tds = CGAL::Triangulation_data_structure_2<Vertex_base>;
 using Triangulation = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 using Vertex_handle = Triangulation::Vertex_handle;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 // Whether s lies in the open half-plane of p with nearest neighbour q, given the
 // approximate squared distances |pq|^2, |ps|^2 and |qs|^2.
@@ -58,6 +54,21 @@ bool in_half_plane(Half_plane half_plane, const Point& p, const Point& q, double
   return compare_distances(s, p, ps2, q, qs2) == CGAL::POSITIVE;
 }
 
+// True if box b certainly holds no point of the open half-plane of p with nearest
+// neighbour q. Both half-planes are {x : f(x) < 0} for an affine f increasing along q - p
+// (behind_p: f(x) = (x - p).(q - p); beyond_bisector: f(x) = |xp|^2 - |xq|^2 =
+// 2 (x - p).(q - p) - |pq|^2), so it suffices that f is certainly positive at the corner of
+// b farthest back along q - p. The corners are input coordinates, so the filter is exact.
+bool outside_half_plane(Half_plane half_plane, const Point& p, const Point& q, const graphs::Kd_box& b) {
+  using geometry::Error_bounded_double;
+  const Error_bounded_double ux = Error_bounded_double(q.x()) - p.x(), uy = Error_bounded_double(q.y()) - p.y();
+  const Error_bounded_double x = Error_bounded_double(q.x() > p.x() ? b.xmin : b.xmax) - p.x();
+  const Error_bounded_double y = Error_bounded_double(q.y() > p.y() ? b.ymin : b.ymax) - p.y();
+  Error_bounded_double f = x * ux + y * uy;
+  if (half_plane == Half_plane::beyond_bisector) f = (f + f) - (ux * ux + uy * uy);
+  return f.sign_is_certain() && f.sign() == CGAL::POSITIVE;
+}
+
 // True if v lies at least |pr| from the line pq: cross(q - p, v - p)^2 >= |pr|^2 |pq|^2.
 bool far_from_line(const Point& p, const Point& q, const Point& v, const Point& r) {
   using geometry::cross, geometry::difference, geometry::squared_length;
@@ -68,129 +79,19 @@ bool far_from_line(const Point& p, const Point& q, const Point& v, const Point& 
          }) != CGAL::NEGATIVE;
 }
 
-// Whether the approximations a < b of two squared distances (non-negative, a finite) prove
-// the exact values in the same order: geometry::certain_sign_of_difference, inlined for
-// the fast path; b infinite stands for "no such value" (overflow is caught before).
-bool certainly_before(double a, double b) {
-  if (b == infinity) return a < infinity;
-  const double sum = a + b;
-  return b - a > sum * 0x1p-48 && sum >= 0x1p-900;
-}
-
-// The two smallest approximate squared distances offered, with who offered them, and the
-// third smallest: enough to name a vertex's nearest neighbour and, when the curve is
-// sampled well, its half neighbour (its second nearest), and to bound how near its other
-// neighbours can be. 32 bytes: the sweep that fills them is most of the fast path's time.
-struct Nearest_two {
-  double d[2] = {infinity, infinity};
-  double third = infinity;
-  Index id[2] = {no_neighbor, no_neighbor};
-
-  // As selects rather than branches: the offers come in no predictable order.
-  void offer(double x, Index by) {
-    const bool c0 = x < d[0], c1 = x < d[1], c2 = x < third;
-    third = c1 ? d[1] : c2 ? x : third;
-    const double d1 = c0 ? d[0] : c1 ? x : d[1];
-    const Index i1 = c0 ? id[0] : c1 ? by : id[1];
-    d[0] = c0 ? x : d[0];
-    id[0] = c0 ? by : id[0];
-    d[1] = d1;
-    id[1] = i1;
-  }
-};
-
+// The search on the triangulation, one vertex at a time: its neighbours in counterclockwise
+// order, every decision by exact predicate, rules on each wedge (ring_proves) and, where
+// they fail, a search outwards.
 class Neighbor_search {
  public:
-  // `inserted`: the points with their indices, in the order of insertion, which numbered
-  // the vertices (Vertex_info::id).
-  Neighbor_search(const Triangulation& dt, std::span<const std::pair<Point, Index>> inserted, Half_plane half_plane,
-                  std::vector<Nearest_and_half_neighbor>& result)
-      : dt_(dt), inserted_(inserted), half_plane_(half_plane), result_(result) {}
+  Neighbor_search(const Triangulation& dt, Half_plane half_plane, std::vector<Nearest_and_half_neighbor>& result)
+      : dt_(dt), half_plane_(half_plane), result_(result) {}
 
   void run() {
-    find_nearest_two();
-    std::vector<bool> exact(inserted_.size(), overflow_);
-    bool any_exact = overflow_;
-    if (!overflow_)
-      for (Index p = 0; p < inserted_.size(); ++p)
-        if (!choose_neighbors(p)) exact[p] = any_exact = true;
-    if (!any_exact) return;
-    for (const Vertex_handle v : dt_.finite_vertex_handles())
-      if (exact[v->info().id]) search_exactly(v);
+    for (const Vertex_handle v : dt_.finite_vertex_handles()) search_exactly(v);
   }
 
  private:
-  // Fast path: one sweep over the faces in memory order and one over the vertices, with
-  // floating-point filters that are certain or give up. Anything they cannot decide (ties,
-  // overflow anywhere, a half neighbour that is not the second nearest, a neighbour of q
-  // that might lead to a nearer point) sends the vertex to search_exactly.
-  const Point& point(Index id) const { return inserted_[id].first; }
-  Index index(Index id) const { return inserted_[id].second; }
-
-  // Each vertex hears once from each neighbour: from the face that has the edge from the
-  // vertex to the neighbour counterclockwise, which for some hull edges is an infinite face.
-  void find_nearest_two() {
-    nearest_.assign(inserted_.size(), Nearest_two{});
-    const Vertex_handle infinite = dt_.infinite_vertex();
-    const auto offer = [&](Vertex_handle u, Vertex_handle w) {
-      const double d = squared_distance_approximation(u->point(), w->point());
-      if (!(d < infinity)) overflow_ = true;  // the filters cannot rank it
-      nearest_[u->info().id].offer(d, w->info().id);
-    };
-    for (const auto face : dt_.finite_face_handles()) {
-      const Vertex_handle u = face->vertex(0), v = face->vertex(1), w = face->vertex(2);
-      offer(u, v);
-      offer(v, w);
-      offer(w, u);
-    }
-    // The hull edges counterclockwise in the infinite faces.
-    auto face = dt_.incident_faces(infinite);
-    const auto done = face;
-    do {
-      const int i = face->index(infinite);
-      offer(face->vertex(Triangulation::ccw(i)), face->vertex(Triangulation::cw(i)));
-    } while (++face != done);
-  }
-
-  bool in_half_plane_of(Index p, Index q, double pq2, Index s, double ps2) const {
-    const Point &pq = point(q), &pp = point(p), &ps = point(s);
-    return in_half_plane(half_plane_, pp, pq, pq2, ps, ps2, squared_distance_approximation(pq, ps));
-  }
-
-  // The fast path's certificate that no point hides beyond p's neighbours. Every point s
-  // has a Delaunay neighbour strictly closer to p, or p itself (search_outwards), so a point
-  // s that is not p's neighbour and does not come after r starts a chain of points closer
-  // than r that enters p's neighbours at one closer than r, which is q, from a neighbour t
-  // of q that is not p's. So it suffices that every neighbour t of q is p, or p's second
-  // nearest r, or comes after r: for t beyond q's two nearest, |qt|^2 >= third(q) >
-  // 2 (|pq|^2 + |pr|^2) >= (|pq| + |pr|)^2 gives |pt| > |pr|; the two nearest are compared.
-  bool chain_certificate(Index p, const Nearest_two& near) const {
-    const Nearest_two& q = nearest_[near.id[0]];
-    if (!certainly_before(2 * (near.d[0] + near.d[1]), q.third)) return false;
-    const Point &pp = point(p), &pr = point(near.id[1]);
-    for (const Index t : q.id) {
-      if (t == no_neighbor || t == p || t == near.id[1]) continue;
-      const Point& pt = point(t);
-      const CGAL::Sign s = compare_distances(pp, pr, near.d[1], pt, squared_distance_approximation(pp, pt));
-      if (s == CGAL::NEGATIVE || (s == CGAL::ZERO && index(t) < index(near.id[1]))) return false;
-    }
-    return true;
-  }
-
-  // Decides vertex p when its second nearest is its half neighbour, or returns false.
-  bool choose_neighbors(Index p) {
-    const Nearest_two& near = nearest_[p];
-    if (near.id[1] == no_neighbor || !certainly_before(near.d[0], near.d[1]) ||
-        !certainly_before(near.d[1], near.third) ||
-        !in_half_plane_of(p, near.id[0], near.d[0], near.id[1], near.d[1]) || !chain_certificate(p, near))
-      return false;
-    result_[index(p)] = {index(near.id[0]), index(near.id[1])};
-    return true;
-  }
-
-  // Exact path for one vertex: its neighbours in counterclockwise order, every decision by
-  // exact predicate, rules on each wedge (ring_proves) and, where they fail, a search
-  // outwards.
 
   // A point seen from p: approximate squared distances to p and to p's nearest neighbour q,
   // and what the search decided about it.
@@ -311,7 +212,7 @@ class Neighbor_search {
   // tangent inside the disk centred at p until it meets a point), so this reaches every
   // point that could come before r.
   void search_outwards(Vertex_handle p, Seen& r) {
-    if (seen_by_.empty()) seen_by_.assign(inserted_.size(), no_neighbor);
+    if (seen_by_.empty()) seen_by_.assign(dt_.number_of_vertices(), no_neighbor);
     const Index stamp = p->info().id;
     seen_by_[stamp] = stamp;
     queue_.clear();
@@ -343,13 +244,9 @@ class Neighbor_search {
   static constexpr std::size_t npos = std::size_t(-1);
 
   const Triangulation& dt_;
-  std::span<const std::pair<Point, Index>> inserted_;  // by vertex id
   Half_plane half_plane_;
   std::vector<Nearest_and_half_neighbor>& result_;
-  // By vertex id:
-  std::vector<Nearest_two> nearest_;
-  bool overflow_ = false;  // some squared distance overflowed: decide every vertex exactly
-  std::vector<Index> seen_by_;  // the vertex whose outward search has seen this one
+  std::vector<Index> seen_by_;  // by vertex id  // the vertex whose outward search has seen this one
   // The exact search of one vertex p:
   const Point* p_ = nullptr;
   const Point* q_ = nullptr;
@@ -379,16 +276,47 @@ void collinear_neighbors(std::span<const Point> points, std::vector<Nearest_and_
   }
 }
 
+// Each point's two neighbours from two exact queries of a kd-tree (graphs/point_kd_tree.h),
+// or nothing if the tree's work limit ran out (points packed far below their spread).
+std::optional<std::vector<Nearest_and_half_neighbor>> neighbors_from_kd_tree(std::span<const Point> points,
+                                                                             Half_plane half_plane) {
+  graphs::Point_kd_tree tree(points);
+  std::vector<Nearest_and_half_neighbor> result(points.size());
+  const auto anywhere = [](Index) { return true; };
+  const auto nowhere = [](const graphs::Kd_box&) { return false; };
+  for (Index rank = 0; rank < points.size(); ++rank) {
+    const Index p = tree.leaf_order()[rank];
+    const std::optional<Index> q = tree.nearest(rank, anywhere, nowhere);
+    if (!q) return std::nullopt;
+    const Point &pp = points[p], &pq = points[*q];
+    if (pp == pq) throw std::invalid_argument("nearest and half neighbours: two points are equal; merge duplicates first");
+    const double pq2 = squared_distance_approximation(pp, pq);
+    const auto in_half = [&](Index s) {
+      const Point& ps = points[s];
+      return in_half_plane(half_plane, pp, pq, pq2, ps, squared_distance_approximation(pp, ps),
+                           squared_distance_approximation(pq, ps));
+    };
+    const auto outside = [&](const graphs::Kd_box& box) { return outside_half_plane(half_plane, pp, pq, box); };
+    const std::optional<Index> half = tree.nearest(rank, in_half, outside);
+    if (!half) return std::nullopt;
+    result[p] = {*q, *half};
+  }
+  return result;
+}
+
 }  // namespace
 
-std::vector<Nearest_and_half_neighbor> nearest_and_half_neighbors(std::span<const Point> points,
-                                                                   Half_plane half_plane) {
+std::vector<Nearest_and_half_neighbor> nearest_and_half_neighbors(std::span<const Point> points, Half_plane half_plane,
+                                                                   Search_structure structure) {
   if (points.size() >= no_neighbor) throw std::invalid_argument("nearest and half neighbours: too many points");
   for (const Point& p : points)
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
       throw std::invalid_argument("nearest and half neighbours: a coordinate is not finite");
+  if (points.size() < 2) return std::vector<Nearest_and_half_neighbor>(points.size());
+  if (structure == Search_structure::kd_tree && graphs::Point_kd_tree::usable(points))
+    if (auto found = neighbors_from_kd_tree(points, half_plane)) return std::move(*found);
+
   std::vector<Nearest_and_half_neighbor> result(points.size());
-  if (points.size() < 2) return result;
   if (graphs::all_collinear(points)) {
     collinear_neighbors(points, result);
     return result;
@@ -411,7 +339,7 @@ std::vector<Nearest_and_half_neighbor> nearest_and_half_neighbors(std::span<cons
   if (dt.number_of_vertices() != points.size())
     throw std::invalid_argument("nearest and half neighbours: two points are equal; merge duplicates first");
 
-  Neighbor_search(dt, indexed, half_plane, result).run();
+  Neighbor_search(dt, half_plane, result).run();
   return result;
 }
 

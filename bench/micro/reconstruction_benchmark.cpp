@@ -8,6 +8,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <benchmark/benchmark.h>
 
+#include "algorithms/nn_crust.h"
 #include "algorithms/registry.h"
 #include "bench/micro/curve_sample_benchmark.h"
 
@@ -23,8 +24,20 @@ void cgal_delaunay(benchmark::State& state) {
   });
 }
 
+// NN-Crust's neighbour search in each structure (algorithms/nn_crust.h): the kd-tree the
+// algorithm uses, and the triangulation it falls back to.
+void neighbor_search(benchmark::State& state, algorithms::Search_structure structure, const char* name) {
+  bench::run_on_curve_sample(state, name, [structure](const std::vector<Point>& points) {
+    return algorithms::nearest_and_half_neighbors(points, algorithms::Half_plane::behind_p, structure).size();
+  });
+}
+
 void register_all() {
   bench::growing_n(benchmark::RegisterBenchmark("cgal_delaunay_triangulation", cgal_delaunay));
+  for (const auto& [structure, name] :
+       {std::pair{algorithms::Search_structure::kd_tree, "nearest_and_half_neighbors_kd_tree"},
+        std::pair{algorithms::Search_structure::delaunay_triangulation, "nearest_and_half_neighbors_delaunay"}})
+    bench::growing_n(benchmark::RegisterBenchmark(name, neighbor_search, structure, name));
   for (const algorithms::Algorithm& algorithm : algorithms::registry()) bench::register_growing_n(algorithm);
 }
 

@@ -45,13 +45,17 @@ Edges brute_nn_crust(std::span<const Point> points) {
   return edges;
 }
 
+constexpr Search_structure structures[] = {Search_structure::kd_tree, Search_structure::delaunay_triangulation};
+
 void expect_matches_brute_force(std::span<const Point> points) {
   const auto expected = brute_neighbors(points);
-  const auto found = nearest_and_half_neighbors(points, Half_plane::behind_p);
-  ASSERT_EQ(found.size(), expected.size());
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    EXPECT_EQ(found[p].nearest, expected[p].nearest) << "point " << p;
-    EXPECT_EQ(found[p].half, expected[p].half) << "point " << p;
+  for (const Search_structure structure : structures) {
+    const auto found = nearest_and_half_neighbors(points, Half_plane::behind_p, structure);
+    ASSERT_EQ(found.size(), expected.size());
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      EXPECT_EQ(found[p].nearest, expected[p].nearest) << "point " << p << ", structure " << int(structure);
+      EXPECT_EQ(found[p].half, expected[p].half) << "point " << p << ", structure " << int(structure);
+    }
   }
   EXPECT_EQ(nn_crust_reconstruction(points), brute_nn_crust(points));
 }
@@ -61,10 +65,12 @@ void expect_matches_brute_force(std::span<const Point> points) {
 RC_GTEST_PROP(NnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
   const std::vector<Point> points = *testing::point_sets(40);
   const auto expected = brute_neighbors(points);
-  const auto found = nearest_and_half_neighbors(points, Half_plane::behind_p);
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    RC_ASSERT(found[p].nearest == expected[p].nearest);
-    RC_ASSERT(found[p].half == expected[p].half);
+  for (const Search_structure structure : structures) {
+    const auto found = nearest_and_half_neighbors(points, Half_plane::behind_p, structure);
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      RC_ASSERT(found[p].nearest == expected[p].nearest);
+      RC_ASSERT(found[p].half == expected[p].half);
+    }
   }
   RC_ASSERT(nn_crust_reconstruction(points) == brute_nn_crust(points));
 }
@@ -74,10 +80,12 @@ RC_GTEST_PROP(NnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
 RC_GTEST_PROP(NnCrust, MatchesTheDefinitionOverAllPairsOnClusteredInput, ()) {
   const std::vector<Point> points = *testing::clustered_points();
   const auto expected = brute_neighbors(points);
-  const auto found = nearest_and_half_neighbors(points, Half_plane::behind_p);
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    RC_ASSERT(found[p].nearest == expected[p].nearest);
-    RC_ASSERT(found[p].half == expected[p].half);
+  for (const Search_structure structure : structures) {
+    const auto found = nearest_and_half_neighbors(points, Half_plane::behind_p, structure);
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      RC_ASSERT(found[p].nearest == expected[p].nearest);
+      RC_ASSERT(found[p].half == expected[p].half);
+    }
   }
 }
 
