@@ -24,6 +24,7 @@
 #include "geometry/io/point_io.h"
 #include "geometry/sampling/sampling.h"
 #include "geometry/sampling/sampling_noise.h"
+#include "bench/runner/huge_page_malloc.h"
 
 namespace {
 
@@ -85,6 +86,7 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  curvebench::bench::restart_with_huge_page_malloc(argv);
   try {
     register_all();
   } catch (const std::exception& error) {  // the fish file is missing or unreadable

@@ -10,6 +10,7 @@
 
 #include "graphs/beta_skeleton.h"
 #include "graphs/proximity_graph.h"
+#include "bench/runner/huge_page_malloc.h"
 
 namespace {
 
@@ -73,6 +74,7 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  curvebench::bench::restart_with_huge_page_malloc(argv);
   register_all();
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

@@ -11,6 +11,7 @@
 #include "algorithms/nn_crust.h"
 #include "algorithms/registry.h"
 #include "bench/micro/curve_sample_benchmark.h"
+#include "bench/runner/huge_page_malloc.h"
 
 namespace {
 
@@ -44,6 +45,7 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  curvebench::bench::restart_with_huge_page_malloc(argv);
   register_all();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -10,8 +10,10 @@
 
 #include "algorithms/registry.h"
 #include "bench/micro/curve_sample_benchmark.h"
+#include "bench/runner/huge_page_malloc.h"
 
 int main(int argc, char** argv) {
+  curvebench::bench::restart_with_huge_page_malloc(argv);
   using namespace curvebench;
   if (algorithms::registered_algorithms().empty())
     std::fputs("curvebench benchmark: the program registers no algorithm; only the yardsticks run\n", stderr);
