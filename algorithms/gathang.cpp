@@ -8,6 +8,7 @@
 
 #include "algorithms/gathan.h"
 #include "graphs/delaunay_triangulation.h"
+#include "geometry/exact_sign.h"
 #include "graphs/proximity_predicates.h"
 
 namespace curvebench::algorithms {
@@ -94,17 +95,32 @@ std::vector<Edge> gathang_reconstruction(std::span<const Point> points, double a
   std::vector<Vertex> next_nearest(n);
   for (Vertex v = 0; v < n; ++v)
     next_nearest[v] = nearest_neighbor_where(dt, v, [&](Vertex w) { return w != proposed[v][0]; });
-  const auto compare_distance = geometry::Kernel().compare_distance_2_object();
-  const auto compare_reach = [&](Vertex v, Vertex vn, Vertex w, Vertex wn) {
-    if (vn == no_vertex || wn == no_vertex) return vn == wn ? CGAL::EQUAL : vn == no_vertex ? CGAL::LARGER : CGAL::SMALLER;
-    return compare_distance(dt.point(v), dt.point(vn), dt.point(w), dt.point(wn));
+  // |v vn| against |w wn|, exactly; no neighbour counts as farthest. The squared lengths
+  // are rounded once per vertex, and a mutual pair's segment equals itself without
+  // arithmetic: it ties with its partner on every curve, and the exact fallback of a tie is
+  // what the sort would otherwise spend its time in.
+  const auto reach = [&](const std::vector<Vertex>& neighbor) {
+    std::vector<double> squared(n);
+    for (Vertex v = 0; v < n; ++v)
+      if (neighbor[v] != no_vertex) squared[v] = geometry::squared_distance_approximation(dt.point(v), dt.point(neighbor[v]));
+    return squared;
+  };
+  std::vector<Vertex> nearest(n);
+  for (Vertex v = 0; v < n; ++v) nearest[v] = proposed[v][0];
+  const std::vector<double> nearest_reach = reach(nearest), next_reach = reach(next_nearest);
+  const auto compare_reach = [&](const std::vector<Vertex>& neighbor, const std::vector<double>& squared, Vertex v,
+                                 Vertex w) {
+    const Vertex vn = neighbor[v], wn = neighbor[w];
+    if (vn == no_vertex || wn == no_vertex) return vn == wn ? CGAL::ZERO : vn == no_vertex ? CGAL::NEGATIVE : CGAL::POSITIVE;
+    if ((vn == w && wn == v) || (v == w && vn == wn)) return CGAL::ZERO;
+    return graphs::compare_lengths(dt.point(v), dt.point(vn), squared[v], dt.point(w), dt.point(wn), squared[w]);
   };
   std::vector<Vertex> by_spacing(n);
   std::iota(by_spacing.begin(), by_spacing.end(), Vertex{0});
   std::sort(by_spacing.begin(), by_spacing.end(), [&](Vertex v, Vertex w) {
-    auto order = compare_reach(v, proposed[v][0], w, proposed[w][0]);
-    if (order == CGAL::EQUAL) order = compare_reach(v, next_nearest[v], w, next_nearest[w]);
-    return order != CGAL::EQUAL ? order == CGAL::SMALLER : dt.point(v) < dt.point(w);
+    auto order = compare_reach(nearest, nearest_reach, v, w);  // POSITIVE: v's is shorter
+    if (order == CGAL::ZERO) order = compare_reach(next_nearest, next_reach, v, w);
+    return order != CGAL::ZERO ? order == CGAL::POSITIVE : dt.point(v) < dt.point(w);
   });
   for (const Vertex c : by_spacing) {
     if (proposed[c][1] != no_vertex || graph.degree(c) >= 2) continue;
