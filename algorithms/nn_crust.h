@@ -10,7 +10,7 @@
 // one). So no triangulation is needed: two exact queries of a kd-tree per point
 // (graphs/point_kd_tree.h), the second pruning boxes outside the half-plane, find both.
 // Measured at 10^6 points of a smooth closed curve: under half the time of a bare CGAL
-// Delaunay triangulation of the same points, and a fifth of its memory (docs/benchmark.md).
+// Delaunay triangulation of the same points (docs/development.md, "Speed at 10^6 points").
 // Where the tree cannot work (coordinates beyond 2^400, points packed far below their
 // spread) a search outwards through CGAL's triangulation decides instead.
 //

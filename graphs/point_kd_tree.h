@@ -7,9 +7,9 @@
 // only where to look, never the answer.
 //
 // Why not a Delaunay triangulation: a query needs the points near the centre, not the
-// whole triangulation; the tree takes a tenth of its memory and, on curves, a fraction of
-// its time (nn_crust.h measures it). Why not CGAL's Spatial_searching: its distances are
-// rounded, and a tie or a near-tie would then be decided by rounding.
+// whole triangulation; the tree takes under a third of its memory and, on curves, a
+// fraction of its time (nn_crust.h measures it). Why not CGAL's Spatial_searching: its
+// distances are rounded, and a tie or a near-tie would then be decided by rounding.
 //
 // Bucket leaves of at most 8 points, split at the median of the wider side of a node's
 // tight bounding box, so that curves (1-D sets in the plane) get boxes that hug them.
