@@ -1,6 +1,6 @@
 // libFuzzer target for graphs/: every builder of proximity_graphs() on a small,
 // deliberately degenerate point set, checked against the laws that tie the graphs
-// together. The decoder only makes valid input (distinct finite points, valid
+// together (and the kd-tree's nearest neighbours against the triangulation's). The decoder only makes valid input (distinct finite points, valid
 // parameters), so a crash, an exception or a broken law is a bug in graphs/ or below.
 //
 // Input: three parameter bytes, then a point program (degenerate_point_program.h):
@@ -22,6 +22,7 @@
 #include "fuzz/fuzz_target.h"
 #include "geometry/io/point_io.h"
 #include "geometry/point_set.h"
+#include "graphs/point_kd_tree.h"
 #include "graphs/proximity_graph.h"
 
 namespace curvebench::fuzz {
@@ -139,6 +140,17 @@ void check_proximity_graph_laws(const Delaunay_triangulation& dt, const Paramete
   laws.require(sigdt == sig_within_delaunay, "SIGDT is the SIG's part of the Delaunay triangulation");
   laws.require(subset(nearest_neighbor, sigdt), "the nearest-neighbour graph is a subgraph of SIGDT");
   laws.require(parameters.k == 0 || subset(nearest_neighbor, table_graph("knn")), "the k-NN graphs grow with k");
+
+  // The kd-tree's exact search (point_kd_tree.h) names every point's nearest neighbour as
+  // the triangulation does, where the tree declares itself usable.
+  if (Point_kd_tree::usable(dt.points())) {
+    Point_kd_tree tree(dt.points());
+    for (Point_kd_tree::Index rank = 0; rank < n; ++rank) {
+      const auto found = tree.nearest(rank, [](Point_kd_tree::Index) { return true; }, [](const Kd_box&) { return false; });
+      laws.require(found == dt.nearest_neighbor(tree.leaf_order()[rank]),
+                   "the kd-tree's nearest neighbour is the triangulation's");
+    }
+  }
 }
 
 }  // namespace
