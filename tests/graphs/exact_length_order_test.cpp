@@ -1,0 +1,87 @@
+// graphs/exact_length_order.h against a brute force: edges sorted by exact squared length in
+// rationals, ties by (source, target). On degenerate point sets at every scale, on an evenly
+// sampled curve (whose edges agree in length to 15 digits, the case the finer keys are
+// for), and on lengths that differ by 2^-100 and 2^-88 of themselves (below and above what
+// the finer keys separate) or not at all.
+#include <gtest/gtest.h>
+
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+#include <CGAL/Gmpq.h>
+
+#include "geometry/curves/analytic_curves.h"
+#include "geometry/lfs/local_feature_size.h"
+#include "geometry/sampling/sampling.h"
+#include "geometry/exact_sign.h"
+#include "graphs/delaunay_triangulation.h"
+#include "graphs/exact_length_order.h"
+#include "tests/support/point_generators.h"
+
+namespace curvebench::graphs {
+namespace {
+
+CGAL::Gmpq squared_length(const Point& a, const Point& b) {
+  const CGAL::Gmpq dx = CGAL::Gmpq(a.x()) - CGAL::Gmpq(b.x()), dy = CGAL::Gmpq(a.y()) - CGAL::Gmpq(b.y());
+  return dx * dx + dy * dy;
+}
+
+std::vector<std::pair<Vertex, Vertex>> brute_force_order(std::span<const Point> points, std::vector<Edge_with_length> edges) {
+  std::vector<std::tuple<CGAL::Gmpq, Vertex, Vertex>> keyed;
+  for (const Edge_with_length& e : edges)
+    keyed.emplace_back(squared_length(points[e.source], points[e.target]), e.source, e.target);
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::pair<Vertex, Vertex>> order;
+  for (const auto& [length, source, target] : keyed) order.emplace_back(source, target);
+  return order;
+}
+
+std::vector<std::pair<Vertex, Vertex>> sorted(std::span<const Point> points, std::vector<Edge_with_length> edges) {
+  sort_by_exact_length(points, edges);
+  std::vector<std::pair<Vertex, Vertex>> order;
+  for (const Edge_with_length& e : edges) order.emplace_back(e.source, e.target);
+  return order;
+}
+
+std::vector<Edge_with_length> delaunay_edges(std::span<const Point> points) {
+  const Delaunay_triangulation dt(points);
+  return with_lengths(points, dt.edges());
+}
+
+RC_GTEST_PROP(ExactLengthOrder, MatchesTheBruteForceOnDegenerateInput, ()) {
+  const std::vector<Point> points = *testing::point_sets(40);
+  const auto edges = delaunay_edges(points);
+  RC_ASSERT(sorted(points, edges) == brute_force_order(points, edges));
+}
+
+TEST(ExactLengthOrder, MatchesTheBruteForceOnAnEvenlySampledCurve) {
+  const geometry::Curve curve = geometry::random_fourier_curve(3);
+  const std::vector<Point> points = geometry::uniform_sampling(geometry::Local_feature_size(curve), 3000).points;
+  const auto edges = delaunay_edges(points);
+  EXPECT_EQ(sorted(points, edges), brute_force_order(points, edges));
+}
+
+// Squared lengths 2^100 + {0, 1, 2^12, 2^12, 2^13} and a copy of each shifted by 2^-20:
+// differences of 2^-100 relative, which only the exact comparison sees, and of 2^-88,
+// which the finer keys separate; equal lengths keep (source, target) order.
+TEST(ExactLengthOrder, SeparatesNearTiesExactly) {
+  std::vector<Point> points;
+  std::vector<Edge_with_length> edges;
+  const double big = std::ldexp(1.0, 50);
+  for (const double shift : {0.0, std::ldexp(1.0, -20)})
+    for (const double dy : {0.0, 1.0, 64.0, -64.0, 64 * std::sqrt(2.0)}) {
+      const Vertex a = Vertex(points.size());
+      points.emplace_back(shift, 0.0);
+      points.emplace_back(shift + big, dy);
+      edges.push_back({geometry::squared_distance_approximation(points[a], points[a + 1]), a, a + 1});
+    }
+  std::reverse(edges.begin(), edges.end());
+  EXPECT_EQ(sorted(points, edges), brute_force_order(points, edges));
+}
+
+}  // namespace
+}  // namespace curvebench::graphs
