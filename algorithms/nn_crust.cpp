@@ -58,7 +58,7 @@ bool in_half_plane(Half_plane half_plane, const Point& p, const Point& q, double
 // neighbour q. Both half-planes are {x : f(x) < 0} for an affine f increasing along q - p
 // (behind_p: f(x) = (x - p).(q - p); beyond_bisector: f(x) = |xp|^2 - |xq|^2 =
 // 2 (x - p).(q - p) - |pq|^2), so it suffices that f is certainly positive at the corner of
-// b farthest back along q - p. The corners are input coordinates, so the filter is exact.
+// b farthest back along q - p. The corners are input coordinates, so the error bound holds.
 bool outside_half_plane(Half_plane half_plane, const Point& p, const Point& q, const graphs::Kd_box& b) {
   using geometry::Error_bounded_double;
   const Error_bounded_double ux = Error_bounded_double(q.x()) - p.x(), uy = Error_bounded_double(q.y()) - p.y();

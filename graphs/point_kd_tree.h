@@ -23,7 +23,6 @@
 #include <span>
 #include <vector>
 
-#include "geometry/exact_sign.h"
 #include "geometry/kernel.h"
 #include "graphs/proximity_predicates.h"
 
@@ -48,7 +47,7 @@ class Point_kd_tree {
 
   /// Whether coordinates this large and differences this small keep the search's rounded
   /// distances finite and above underflow: magnitudes at most 2^400 and a bounding box
-  /// wider than 2^-400. Queries on other points give up at once.
+  /// wider than 2^-400. On other points the margins stop pruning and queries soon give up.
   static bool usable(std::span<const geometry::Point> points);
 
   /// The point indices in leaf order: points near in space are mostly near here, so queries
@@ -57,10 +56,10 @@ class Point_kd_tree {
 
   /// The nearest point s to the centre c = leaf_order()[rank], s != c, with eligible(s) (an
   /// exact test), by exact squared distance, ties to the smaller index; `none` if there is
-  /// none. (The centre is named by its rank in leaf order, where its coordinates are at hand.) A box
-  /// for which excludes(box) is true is not searched: it must hold no eligible point.
-  /// Gives up (returns nothing) once the points examined by all queries of this tree
-  /// exceed `work_limit`, so that a caller can bound the total work on adversarial input.
+  /// none. The centre is named by its rank in leaf order, where its coordinates are at
+  /// hand. A box for which excludes(box) is true is not searched: it must hold no eligible
+  /// point. Gives up (returns nothing) once the points examined by all queries of this tree
+  /// exceed the work limit, so that a caller can bound the total work on adversarial input.
   template <class Eligible, class Excludes>
   std::optional<Index> nearest(Index rank, Eligible eligible, Excludes excludes);
 

@@ -2,10 +2,11 @@
 //
 // Why: at 10^6 points a Delaunay triangulation touches about 300 MB of fresh memory, and
 // the kernel faults it in 4 KB at a time; under a hypervisor that was a third of the run
-// (docs/development.md, "Speed at 10^6 points"). With 2 MB pages the triangulation-based
-// algorithms ran 1.3-1.9x faster there. Linux grants huge pages to a process only where it
-// asks (the usual setting, transparent_hugepage=madvise), and glibc asks only when the
-// tunable glibc.malloc.hugetlb=1 is set before the program starts: hence the restart.
+// (docs/development.md, "Speed at 10^6 points"). With 2 MB pages the triangulation and
+// the algorithms built on it ran 1.9-2.9x faster there. Linux grants huge pages to a
+// process only where it asks (the usual setting, transparent_hugepage=madvise), and glibc
+// asks only when the tunable glibc.malloc.hugetlb=1 is set before the program starts:
+// hence the restart.
 //
 // Nothing restarts when GLIBC_TUNABLES already names glibc.malloc.hugetlb (so
 // GLIBC_TUNABLES=glibc.malloc.hugetlb=0 turns this off) or when the restart fails; the
