@@ -30,13 +30,17 @@ namespace curvebench::graphs {
 
 /// An axis-parallel box of the tree: the tight bounds of the points of one node.
 struct Kd_box {
-  double xmin, ymin, xmax, ymax;  ///< the bounds, inclusive
+  double xmin;  ///< the least x of its points
+  double ymin;  ///< the least y of its points
+  double xmax;  ///< the greatest x of its points
+  double ymax;  ///< the greatest y of its points
 };
 
 /// A kd-tree over a span of points (kept, not copied: they must outlive the tree) for
 /// exact nearest-point queries. Nothing changes after construction.
 class Point_kd_tree {
  public:
+  /// A point's index in the span the tree was built on.
   using Index = std::uint32_t;
   /// The index that stands for "no point".
   static constexpr Index none = std::numeric_limits<Index>::max();
