@@ -111,6 +111,13 @@ std::string describe(int status) {
   return "ended abnormally";
 }
 
+// No task ends its own process this way: these signals come from whoever stops the run
+// (scancel sends SIGTERM to every process of a Slurm task, a terminal sends SIGINT to
+// its foreground processes), and the parent may see its worker die before it gets its own.
+bool stopped_from_outside(int status) {
+  return WIFSIGNALED(status) && (WTERMSIG(status) == SIGTERM || WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGHUP);
+}
+
 std::string time_limit_text(double seconds) {
   char text[64];
   std::snprintf(text, sizeof text, "exceeded the time limit of %g s", seconds);
@@ -194,6 +201,8 @@ void run_in_processes(std::size_t count, const Process_pool_options& options,
     close(worker.socket);
     int status = 0;
     reap(worker.pid, &status);
+    if (outcome.kind == Task_outcome::Kind::crashed && stopped_from_outside(status))
+      throw Run_stopped("a worker was " + describe(status) + ": the run stops; --resume runs the rest");
     if (outcome.kind == Task_outcome::Kind::crashed) outcome.reason = describe(status);
     if (next < count) {
       start_worker();

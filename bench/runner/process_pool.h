@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 namespace curvebench::bench {
@@ -61,11 +62,19 @@ Fork_hooks set_fork_hooks(Fork_hooks hooks);
 // KeyboardInterrupt on Ctrl-C).
 std::function<void()> set_interruption_check(std::function<void()> check);
 
+// Thrown when a worker was stopped from outside (SIGTERM, SIGINT or SIGHUP: scancel, a
+// preempted Slurm task, Ctrl-C in a terminal): the whole run is being stopped, so its task
+// gets no outcome (a resumed run runs it again) rather than a "crashed" one.
+struct Run_stopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Runs task(0) ... task(count - 1), in that order, in at most options.workers worker
 // processes; calls done(i, outcome) in the parent as each ends, in the order they end.
-// Throws std::system_error if a socket or process cannot be made, and passes on what the
-// interruption check or `done` throws; when it throws, the workers still running are
-// killed and reaped first, so that none works on unseen.
+// Throws std::system_error if a socket or process cannot be made, Run_stopped if a
+// worker was stopped from outside, and passes on what the interruption check or `done`
+// throws; when it throws, the workers still running are killed and reaped first, so that
+// none works on unseen.
 void run_in_processes(std::size_t count, const Process_pool_options& options,
                       const std::function<std::string(std::size_t)>& task,
                       const std::function<void(std::size_t, Task_outcome)>& done);

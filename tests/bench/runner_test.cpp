@@ -140,6 +140,23 @@ TEST(ProcessPool, AWorkerRunsTaskAfterTaskAndIsReplacedWhenItDies) {
   EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);  // every worker reaped
 }
 
+// A worker stopped by SIGTERM (as scancel stops every process of a task) stops the run:
+// its task gets no "crashed" row, which a resumed run would keep instead of running it.
+TEST(ProcessPool, AWorkerStoppedFromOutsideStopsTheRunWithoutAnOutcome) {
+  std::map<std::size_t, Task_outcome> outcomes;
+  EXPECT_THROW(run_in_processes(
+                   4, {.workers = 1},
+                   [](std::size_t i) -> std::string {
+                     if (i == 1) raise(SIGTERM);
+                     return "ok";
+                   },
+                   [&](std::size_t i, Task_outcome outcome) { outcomes.emplace(i, std::move(outcome)); }),
+               Run_stopped);
+  ASSERT_EQ(outcomes.size(), 1u);
+  EXPECT_EQ(outcomes[0].kind, Kind::finished);
+  EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);  // every worker reaped
+}
+
 TEST(ProcessPool, AMemoryHogFailsAlone) {
   Task_outcome outcome;
   run_in_processes(
