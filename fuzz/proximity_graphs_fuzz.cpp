@@ -1,7 +1,8 @@
 // libFuzzer target for graphs/: every builder of proximity_graphs() on a small,
 // deliberately degenerate point set, checked against the laws that tie the graphs
-// together (and the kd-tree's nearest neighbours against the triangulation's). The decoder only makes valid input (distinct finite points, valid
-// parameters), so a crash, an exception or a broken law is a bug in graphs/ or below.
+// together (and the kd-tree's nearest neighbours against the triangulation's). The
+// decoder only makes valid input (distinct finite points, valid parameters), so a crash,
+// an exception or a broken law is a bug in graphs/ or below.
 //
 // Input: three parameter bytes, then a point program (degenerate_point_program.h):
 //   beta  = b / 32, in [0, 8); below 1 the program may draw at most 24 points (O(n^3))

@@ -28,9 +28,9 @@ std::pair<double, double> two_sum(double a, double b) {
 }
 
 // |ab|^2 as an unevaluated sum hi + lo, within 2^-96 |ab|^2 of the exact value (for
-// |ab|^2 in [2^-800, 2^1000]: no term underflows or overflows). The differences are exact as hi + lo pairs, the
-// squares of their high parts exact as fma splits, and what is left is smaller than the
-// square by 2^-52 or more and rounded once or twice.
+// |ab|^2 in [2^-800, 2^1000]: no term underflows or overflows). The differences are exact
+// as hi + lo pairs, the squares of their high parts exact as fma splits, and what is left
+// is smaller than the square by 2^-52 or more and rounded once or twice.
 struct Refined_length {
   double hi, lo;
   friend bool operator<(const Refined_length& a, const Refined_length& b) {

@@ -47,18 +47,8 @@ Edges brute_hnn_crust(std::span<const Point> points) {
   return edges;
 }
 
-constexpr Search_structure structures[] = {Search_structure::kd_tree, Search_structure::delaunay_triangulation};
-
 void expect_matches_brute_force(std::span<const Point> points) {
-  const auto expected = brute_neighbors(points);
-  for (const Search_structure structure : structures) {
-    const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector, structure);
-    ASSERT_EQ(found.size(), expected.size());
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      EXPECT_EQ(found[p].nearest, expected[p].nearest) << "point " << p << ", structure " << int(structure);
-      EXPECT_EQ(found[p].half, expected[p].half) << "point " << p << ", structure " << int(structure);
-    }
-  }
+  EXPECT_EQ(testing::neighbor_mismatch(points, Half_plane::beyond_bisector), std::nullopt);
   EXPECT_EQ(hnn_crust_reconstruction(points), brute_hnn_crust(points));
 }
 
@@ -66,14 +56,7 @@ void expect_matches_brute_force(std::span<const Point> points) {
 
 RC_GTEST_PROP(HnnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
   const std::vector<Point> points = *testing::point_sets(40);
-  const auto expected = brute_neighbors(points);
-  for (const Search_structure structure : structures) {
-    const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector, structure);
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      RC_ASSERT(found[p].nearest == expected[p].nearest);
-      RC_ASSERT(found[p].half == expected[p].half);
-    }
-  }
+  RC_ASSERT(!testing::neighbor_mismatch(points, Half_plane::beyond_bisector));
   const Edges edges = hnn_crust_reconstruction(points);
   RC_ASSERT(edges == brute_hnn_crust(points));
   for (const std::size_t degree : degrees(edges, points.size())) RC_ASSERT(degree <= 2u);
@@ -81,14 +64,7 @@ RC_GTEST_PROP(HnnCrust, MatchesTheDefinitionOverAllPairsOnDegenerateInput, ()) {
 
 RC_GTEST_PROP(HnnCrust, MatchesTheDefinitionOverAllPairsOnClusteredInput, ()) {
   const std::vector<Point> points = *testing::clustered_points();
-  const auto expected = brute_neighbors(points);
-  for (const Search_structure structure : structures) {
-    const auto found = nearest_and_half_neighbors(points, Half_plane::beyond_bisector, structure);
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      RC_ASSERT(found[p].nearest == expected[p].nearest);
-      RC_ASSERT(found[p].half == expected[p].half);
-    }
-  }
+  RC_ASSERT(!testing::neighbor_mismatch(points, Half_plane::beyond_bisector));
   RC_ASSERT(hnn_crust_reconstruction(points) == brute_hnn_crust(points));
 }
 

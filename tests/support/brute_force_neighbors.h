@@ -5,7 +5,9 @@
 
 #include <CGAL/Gmpq.h>
 
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "algorithms/nn_crust.h"
@@ -58,6 +60,25 @@ inline std::vector<algorithms::Nearest_and_half_neighbor> brute_force_nearest_an
     });
   }
   return result;
+}
+
+// The first point where nearest_and_half_neighbors, in either search structure, differs
+// from the brute force, described; nothing if they agree everywhere.
+inline std::optional<std::string> neighbor_mismatch(std::span<const geometry::Point> points,
+                                                    algorithms::Half_plane half_plane) {
+  using algorithms::Search_structure;
+  const auto expected = brute_force_nearest_and_half_neighbors(points, half_plane);
+  for (const Search_structure structure : {Search_structure::kd_tree, Search_structure::delaunay_triangulation}) {
+    const auto found = algorithms::nearest_and_half_neighbors(points, half_plane, structure);
+    const std::string where = structure == Search_structure::kd_tree ? "kd-tree" : "triangulation";
+    if (found.size() != expected.size()) return where + ": " + std::to_string(found.size()) + " results";
+    for (std::size_t p = 0; p < points.size(); ++p)
+      if (found[p].nearest != expected[p].nearest || found[p].half != expected[p].half)
+        return where + ", point " + std::to_string(p) + ": found " + std::to_string(found[p].nearest) + ", " +
+               std::to_string(found[p].half) + ", expected " + std::to_string(expected[p].nearest) + ", " +
+               std::to_string(expected[p].half);
+  }
+  return std::nullopt;
 }
 
 }  // namespace curvebench::testing
