@@ -18,7 +18,12 @@
 // differed between processes and -j settings, and its collapses slowed to 13-17 s at 10^4
 // points. Here every tie goes to the smaller index of the lexicographically sorted input,
 // so the output is the same for any input order, run or process; and a removal touches
-// only its neighbourhood, so the run is O(n log n) for bounded degree.
+// only its neighbourhood, so the run is O(n log n) for bounded degree. It is not bounded
+// on smooth curves: the triangulation fans out across convex arcs, giving vertices
+// hundreds of neighbours, each of whose removals simulates the fan's apex again. A hole
+// of d vertices is therefore filled from the Delaunay triangulation of its ring, in
+// O(d log d), and each sample's nearest edge found by a walk over it (Hole_search), not
+// by an O(d^2) fill and O(d) edges per sample; still superlinear (see docs/algorithms.md).
 //
 // Deviations from the paper and from CGAL, each a choice of this implementation:
 //  - the operation is the removal of a vertex from a Delaunay triangulation of the
@@ -31,10 +36,10 @@
 //  - a ghost edge sends each sample to its nearer end (exact comparison; the smaller index
 //    on a tie);
 //  - the default stop is derived from the input (see Optimal_transport_options), and its
-//    output also draws a ghost edge between two ends of regular chains whose samples lie
-//    along it (their squared distance to its line, by mass, at most half their ghost
-//    cost): a gap in a closed curve, not the chord of an open arc. The plan and its cost
-//    are unchanged; only the drawing closes the gap.
+//    output also draws the gaps between regular chains: an edge of the triangulation
+//    between two chain ends at most 3/2 as long as the longer chain edge at its ends,
+//    shortest first. That closes a closed curve's polygon and leaves the chord of an open
+//    arc undrawn. The plan and its cost are unchanged; only the drawing closes the gaps.
 //
 // Decisions on the triangulation (Delaunay, hole fills, hull) are exact predicates. The
 // transport plan (which edge a sample goes to) and the greedy order are an optimisation
@@ -54,21 +59,28 @@ namespace curvebench::algorithms {
 // With neither set, it stops at the first step where every vertex that carries mass lies
 // on a regular edge: no isolated vertex. (The greedy order begins at cost 0 with every
 // sample at its own vertex, all isolated; each removal spreads samples onto edges.) On
-// noise-free closed curves this leaves about a seventh of the points, and often one
-// short ghost edge (a gap) between two ends of the polygon's chain, its samples clustered
-// at its ends: the default output draws such an edge where its samples lie along it
-// rather than across it (see the deviations). Stopping only where no edge carries samples
-// to its ends closes the polygon but leaves 3 to 8 vertices, and stopping at the first
-// step whose output is closed curves turns complex outlines into triangles and open arcs
-// into loops: both tried, both too coarse. Where no step leaves every vertex on an edge
-// (coarse samplings of wiggly curves), it returns the first step with the fewest isolated
-// vertices, found by running twice. The rule is still being tuned (issue 41).
+// noise-free closed curves this leaves a seventh to a third of the points in regular
+// chains, with gaps between the chains' ends where two chains grew towards each other
+// (one or two on the suites' samplings, thousands on 10^5 points of a smooth curve): the
+// default output draws the gaps (see the deviations). Stopping only where no edge carries
+// samples to its ends closes the polygon but leaves 3 to 8 vertices, and stopping at the
+// first step whose output is closed curves turns complex outlines into triangles and open
+// arcs into loops: both tried, both too coarse. Where no step leaves every vertex on an
+// edge (coarse samplings of wiggly curves), it returns the first step with the fewest
+// isolated vertices, replaying the greedy order to it. The rule is still being tuned
+// (issue 41).
 struct Optimal_transport_options {
   // Stop when this many vertices remain (0: unset).
   std::size_t vertices = 0;
   // Stop before the Wasserstein distance (the square root of transport cost per unit mass)
   // would exceed this fraction of the points' bounding-box diagonal (0: unset).
   double tolerance = 0;
+  // How a simulated removal finds each sample's nearest edge in the filled hole: by a walk
+  // over the Delaunay triangulation of a large hole's ring (the default), or by scanning
+  // every edge of the hole. Both give the same output in general position (no four points
+  // of a ring on a circle, no two edges equally near a sample); the scan is O(d) per sample in a hole of d vertices, and is there for
+  // tests and benchmarks to compare with.
+  enum class Hole_search { ring_triangulation, scan } hole_search = Hole_search::ring_triangulation;
 };
 
 // The output vertices (input points on a regular edge, or isolated with mass), in
