@@ -10,10 +10,6 @@
 #include "algorithms/registry.h"
 #include "fuzz/reconstruction_laws.h"
 
-// CGAL 5.5's optimal-transport reconstruction leaks a few allocations (fixed in CGAL
-// 5.6); LeakSanitizer reads this list in the fuzz build, and nothing else does.
-extern "C" const char* __lsan_default_suppressions() { return "leak:Optimal_transportation_reconstruction_2\n"; }
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   curvebench::fuzz::Fuzz_input input(data, size);
   curvebench::fuzz::check_reconstruction_input(curvebench::algorithms::registry(), input);

@@ -283,22 +283,36 @@ TEST(OptimalTransport, TakesDegenerateAndExtremeInput) {
   for (int i = 0; i < 40; ++i) line.emplace_back(i, 3.0 * i);
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 8; ++j) grid.emplace_back(i, j);
+  // A wheel of cocircular points: the 32 lattice points on x^2 + y^2 = 1105 around the
+  // origin, whose ring triangulation is degenerate (any fill of the hole is Delaunay).
+  std::vector<Point> wheel{{0, 0}};
+  for (int x = -33; x <= 33; ++x)
+    for (int y = -33; y <= 33; ++y)
+      if (x * x + y * y == 1105) wheel.emplace_back(x, y);
+  ASSERT_EQ(wheel.size(), 33u);
   cases.push_back(line);
   cases.push_back(grid);
+  cases.push_back(wheel);
   for (const double scale : {1e-300, 1e300}) {
     auto curve = fourier_curve(200, 0, 1);
     for (Point& p : curve) p = {p.x() * scale, p.y() * scale};
     cases.push_back(curve);
   }
-  for (const auto& points : cases) {
-    const Reconstruction result = optimal_transport_reconstruction(points);
-    expect_valid(points, result);
-    EXPECT_FALSE(result.points.empty());
+  for (const auto& points : cases)
+    for (const auto search : {Optimal_transport_options::Hole_search::ring_triangulation,
+                              Optimal_transport_options::Hole_search::scan})
+      for (const std::size_t vertices : {0u, 5u}) {
+        const Reconstruction result = optimal_transport_reconstruction(points, {.vertices = vertices, .hole_search = search});
+        expect_valid(points, result);
+        EXPECT_FALSE(result.points.empty());
+      }
+  // A grid is all cocircular quadruples, a wheel one circle: the same output in any order.
+  for (const auto& points : {grid, wheel}) {
+    auto shuffled = points;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(4));
+    EXPECT_EQ(optimal_transport_reconstruction(points, {.vertices = 5}).edges,
+              optimal_transport_reconstruction(shuffled, {.vertices = 5}).edges);
   }
-  // A grid is all cocircular quadruples: the same output in any order.
-  auto shuffled = grid;
-  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(4));
-  EXPECT_EQ(optimal_transport_reconstruction(grid).edges, optimal_transport_reconstruction(shuffled).edges);
   // A point given twice weighs twice: the line's vertex budget keeps its doubled end.
   duplicated = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 0}, {3, 0}};
   EXPECT_EQ(optimal_transport_run(duplicated, {.vertices = 2}).reconstruction.points.back(), Point(3, 0));
