@@ -78,8 +78,8 @@ struct Optimal_transport_options {
   // How a simulated removal finds each sample's nearest edge in the filled hole: by a walk
   // over the Delaunay triangulation of a large hole's ring (the default), or by scanning
   // every edge of the hole. Both give the same output in general position (no four points
-  // of a ring on a circle, no two edges equally near a sample); the scan is O(d) per sample in a hole of d vertices, and is there for
-  // tests and benchmarks to compare with.
+  // of a ring on a circle, no two edges equally near a sample); the scan, O(d) per sample
+  // in a hole of d vertices, is there for tests and benchmarks to compare with.
   enum class Hole_search { ring_triangulation, scan } hole_search = Hole_search::ring_triangulation;
 };
 
