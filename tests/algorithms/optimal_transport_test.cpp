@@ -5,6 +5,8 @@
 //  - laws on any input: valid output on input points, the same output for any input
 //    order and on a second run, the same combinatorics after scaling by a power of two;
 //  - degenerate and extreme input;
+//  - the walk that finds a sample's nearest edge in a large hole against a scan of every
+//    edge (Optimal_transport_options::Hole_search);
 //  - the oracle: CGAL's Optimal_transportation_reconstruction_2 (no relocation, as ours)
 //    on a few hundred noisy closed curves, both outputs' transport cost measured by one
 //    evaluator here, at the same vertex count.
@@ -360,8 +362,8 @@ RC_GTEST_PROP(OptimalTransportLaws, ScalingByAPowerOfTwoScalesTheOutput, ()) {
 // The walk over a large hole's ring triangulation against the scan of every hole edge on
 // 20 noise-free closed curves of 600 points simplified to 30 vertices, where the
 // triangulation fans out across the convex arcs and the fans' apexes go late: replacing
-// the walk's result by the first edge changed 19 of the 20 runs, walking only the triangle that
-// holds the sample changed 8.
+// the walk's result by the first edge changed 19 of the 20 runs, walking only the
+// triangle that holds the sample changed 8.
 TEST(OptimalTransport, RingTriangulationFindsTheEdgesTheScanFindsOnDenseCurves) {
   for (std::uint64_t seed = 0; seed < 20; ++seed) {
     const auto points = fourier_curve(600, 0, seed);
@@ -373,11 +375,11 @@ TEST(OptimalTransport, RingTriangulationFindsTheEdgesTheScanFindsOnDenseCurves) 
   }
 }
 
-// The same on any point set in general position
-// of these kinds: a wheel (a centre and points at random angles around it, radii jittered
-// so that no four lie on a circle) and a fan (the same on an arc of 2 radians, its centre
-// a hull vertex), where the centre's ring holds most of the points; and closed curves,
-// with or without noise. The whole greedy run must come out the same, at any stop.
+// The same on point sets in general position of three kinds: a wheel (a centre and points
+// at random angles around it, radii jittered so that no four lie on a circle) and a fan
+// (the same on an arc of 2 radians, its centre a hull vertex), where the centre's ring
+// holds most of the points; and closed curves, with or without noise. The whole greedy
+// run must come out the same, at any stop.
 RC_GTEST_PROP(OptimalTransportLaws, RingTriangulationFindsTheEdgesTheScanFinds, ()) {
   const auto n = *rc::gen::inRange<std::size_t>(20, 800);
   const int shape = *rc::gen::inRange(0, 3);
