@@ -80,7 +80,9 @@ struct Optimal_transport_options {
   // every edge of the hole. Both give the same output in general position (no four points
   // of a ring on a circle, no two edges equally near a sample); the scan, O(d) per sample
   // in a hole of d vertices, is there for tests and benchmarks to compare with.
-  enum class Hole_search { ring_triangulation, scan } hole_search = Hole_search::ring_triangulation;
+  enum class Hole_search { ring_triangulation, scan };
+  // The hole search a run uses (see Hole_search).
+  Hole_search hole_search = Hole_search::ring_triangulation;
 };
 
 // The output vertices (input points on a regular edge, or isolated with mass), in
