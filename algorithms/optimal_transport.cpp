@@ -237,27 +237,39 @@ class Simplification {
   // The vertices run() removed, in order.
   std::span<const Index> removals() const { return removals_; }
 
-  // Removes vertices, cheapest first, until `options` says stop.
+  // Removes vertices, cheapest first, until `options` says stop. The default stop (neither
+  // option set) is the first state without isolated vertices; if that state has a
+  // branching vertex, the run goes on to the first state with no defect at all, as long as
+  // the total cost stays within twice that state's. The caller then goes back to the first
+  // state with the fewest defects the run passed through.
   void run(const Optimal_transport_options& options) {
     const double mass = std::accumulate(masses_.begin(), masses_.end(), 0.0);
     const double diagonal = geometry::bounding_box_diagonal(scaled_points_);
     const double budget = options.tolerance * options.tolerance * diagonal * diagonal * mass;
+    const bool default_stop = options.vertices == 0 && options.tolerance == 0;
+    double settled = -1;  // the cost of the first state without isolated vertices
+    fewest_defects_ = defects(), vertices_at_fewest_ = alive_count_;
     while (alive_count_ > 2 && !queue_.empty()) {
-      if (options.vertices > 0 ? alive_count_ <= options.vertices : options.tolerance == 0 && isolated_ == 0) break;
+      if (options.vertices > 0 && alive_count_ <= options.vertices) break;
+      if (default_stop && defects() == 0) break;
+      if (default_stop && isolated_ == 0 && settled < 0) settled = total_cost_;
       const Removal next = queue_.top();
       if (!std::isfinite(next.cost_change)) break;
       if (options.tolerance > 0 && total_cost_ + next.cost_change > budget) break;
+      if (settled >= 0 && total_cost_ + next.cost_change > 2 * settled) break;
       queue_.pop();
       remove(next.vertex);
       removals_.push_back(next.vertex);
-      if (isolated_ < fewest_isolated_) fewest_isolated_ = isolated_, vertices_at_fewest_ = alive_count_;
+      if (defects() < fewest_defects_) fewest_defects_ = defects(), vertices_at_fewest_ = alive_count_;
     }
   }
 
   // Of the states run() passed through, the vertex count of the first with the fewest
-  // isolated vertices.
-  std::size_t vertices_at_fewest_isolated() const { return vertices_at_fewest_; }
-  bool has_isolated_vertex() const { return isolated_ > 0; }
+  // defects.
+  std::size_t vertices_at_fewest_defects() const { return vertices_at_fewest_; }
+  // Vertices with mass on no regular edge (isolated) or on three or more (branching): the
+  // default stop looks for the first state with none.
+  std::ptrdiff_t defects() const { return isolated_ + branching_; }
 
   // The output: the regular edges and the vertices with mass, in index order. With
   // `close_gaps` (the default stop), also the gaps in the regular chains: at the default
@@ -421,10 +433,12 @@ class Simplification {
   }
 
   bool isolated(Index v) const { return alive_[v] && regular_[v] == 0 && fed_[v] > 0; }
+  bool branching(Index v) const { return alive_[v] && regular_[v] > 2; }
 
   // Adds (+1) or takes away (-1) what plan gives its ends: a regular edge, or mass.
   void count(Index a, Index b, const Edge_plan& plan, int sign) {
     isolated_ -= isolated(a) + isolated(b);
+    branching_ -= branching(a) + branching(b);
     if (plan.regular) {
       regular_[a] += sign, regular_[b] += sign;
     } else {
@@ -432,6 +446,7 @@ class Simplification {
       if (plan.feeds_second) fed_[b] += sign;
     }
     isolated_ += isolated(a) + isolated(b);
+    branching_ += branching(a) + branching(b);
   }
 
   // The squared distance from sample s to segment (a, b), in scaled coordinates.
@@ -672,7 +687,8 @@ class Simplification {
   std::vector<Queue::handle_type> handles_;
   std::size_t alive_count_ = 0;
   std::ptrdiff_t isolated_ = 0;  // vertices with mass on no regular edge
-  std::ptrdiff_t fewest_isolated_ = std::numeric_limits<std::ptrdiff_t>::max();
+  std::ptrdiff_t branching_ = 0;  // vertices on three or more regular edges
+  std::ptrdiff_t fewest_defects_ = std::numeric_limits<std::ptrdiff_t>::max();
   std::size_t vertices_at_fewest_ = 0;
   double total_cost_ = 0;
   bool greedy_ = true;
@@ -727,16 +743,14 @@ Optimal_transport_run optimal_transport_run(std::span<const Point> input, const 
 
   Simplification simplification(points, masses, options.hole_search);
   simplification.run(options);
-  if (options.vertices == 0 && options.tolerance == 0 && simplification.has_isolated_vertex() &&
-      simplification.vertices_at_fewest_isolated() > 0) {
-    // No state left every vertex on an edge: go back to the one with the fewest isolated
-    // vertices, replaying the greedy order's removals up to it, rather than end with the
-    // last two vertices and a ghost edge between them.
+  const bool default_stop = options.vertices == 0 && options.tolerance == 0;  // which also draws gaps
+  if (default_stop && simplification.vertices_at_fewest_defects() != simplification.vertices()) {
+    // The run ended past the first state with the fewest defects: go back to it, replaying
+    // the greedy order's removals.
     Simplification again(points, masses, options.hole_search, false);
-    again.replay(simplification.removals().first(points.size() - simplification.vertices_at_fewest_isolated()));
+    again.replay(simplification.removals().first(points.size() - simplification.vertices_at_fewest_defects()));
     return {again.result(true), again.cost(), again.vertices()};
   }
-  const bool default_stop = options.vertices == 0 && options.tolerance == 0;  // which draws gaps
   return {simplification.result(default_stop), simplification.cost(), simplification.vertices()};
 }
 
@@ -751,7 +765,7 @@ Algorithm optimal_transport_algorithm() {
   static const Parameter tolerance{.name = "tolerance", .default_value = 0, .minimum = 0, .maximum = 1,
                                    .meaning = "stop before the Wasserstein distance exceeds this fraction of the "
                                               "bounding-box diagonal (0: unset; neither set: stop when every "
-                                              "vertex with mass lies on an edge)"};
+                                              "vertex with mass lies on one or two edges, see the header)"};
   return {
       .name = "optimal-transport",
       .title = "Optimal Transport",

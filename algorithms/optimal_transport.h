@@ -62,13 +62,18 @@ namespace curvebench::algorithms {
 // noise-free closed curves this leaves a seventh to a third of the points in regular
 // chains, with gaps between the chains' ends where two chains grew towards each other
 // (one or two on the suites' samplings, thousands on 10^5 points of a smooth curve): the
-// default output draws the gaps (see the deviations). Stopping only where no edge carries
-// samples to its ends closes the polygon but leaves 3 to 8 vertices, and stopping at the
-// first step whose output is closed curves turns complex outlines into triangles and open
-// arcs into loops: both tried, both too coarse. Where no step leaves every vertex on an
-// edge (coarse samplings of wiggly curves), it returns the first step with the fewest
-// isolated vertices, replaying the greedy order to it. The rule is still being tuned
-// (issue 41).
+// default output draws the gaps (see the deviations). If that step leaves a branching
+// vertex (one on three or more regular edges: a spur, or chains crossing a narrow part),
+// the greedy order goes on to the first step with no isolated and no branching vertex, but
+// not past twice the transport cost of the step where it would have stopped; it returns
+// the first step with the fewest such defects, replaying the greedy order to it. Where
+// no step leaves every vertex on an edge (coarse samplings of wiggly curves), that is the
+// step with the fewest isolated vertices. Tried and dropped: stopping only where no edge
+// carries samples to its ends (3 to 8 vertices left), at the first step whose output is
+// closed curves (complex outlines become triangles, open arcs loops), at the first step
+// without defects however costly (the same on the survey's complex and spiral outlines),
+// and pruning spurs from the drawing (it leaves their ends isolated). The rule is still
+// being tuned (issue 41).
 struct Optimal_transport_options {
   // Stop when this many vertices remain (0: unset).
   std::size_t vertices = 0;

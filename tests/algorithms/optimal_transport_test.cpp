@@ -236,22 +236,35 @@ TEST(OptimalTransport, DefaultClosesClosedCurvesAndLeavesArcsOpen) {
   EXPECT_GE(arcs_right, cases * 4 / 5);
 }
 
-// The sampling suite's wiggliest curves (8 harmonics, amplitude 0.5, decay 1.5) under
-// the safe sampler at its epsilons: where no state leaves every vertex on an edge, the
-// default still returns edges (the state with the fewest isolated vertices), never the
-// isolated vertices alone (as it did on seed 14 at epsilon 0.5 and 0.75).
-TEST(OptimalTransport, DefaultNeverGivesIsolatedVerticesAlone) {
+// The hardest closed curves of the sampling suite under the safe sampler at its epsilons:
+// the survey's four outlines and the wiggly Fourier curves (8 harmonics, amplitude 0.5,
+// decay 1.5). Where no state leaves every vertex on an edge, the default still returns
+// edges (the state with the fewest defects), never the isolated vertices alone (as it did
+// on seed 14 at epsilon 0.5 and 0.75). The curve's own topology is the oracle for the
+// printed rate of one closed polygon.
+TEST(OptimalTransport, DefaultOnTheSamplingSuitesHardestCurves) {
+  std::vector<std::string> curves;
+  for (const char* outline : {"simple", "blob2", "complex", "spiral"})
+    curves.push_back(std::string("svg:" CURVEBENCH_SOURCE_DIR "/data/svg/") + outline + ".svg");
   for (int seed = 1; seed <= 30; ++seed)
+    curves.push_back("fourier:seed=" + std::to_string(seed) + ",harmonics=8,amplitude=0.5,decay=1.5");
+  std::size_t polygons = 0, cases = 0;
+  for (const std::string& spec : curves)
     for (const double epsilon : {0.25, 0.5, 0.75}) {
-      const geometry::Curve curve =
-          geometry::make_curve("fourier:seed=" + std::to_string(seed) + ",harmonics=8,amplitude=0.5,decay=1.5");
-      const geometry::Local_feature_size lfs(curve);
+      const geometry::Local_feature_size lfs(geometry::make_curve(spec));
       const auto points = geometry::safe_epsilon_sampling(lfs, epsilon, geometry::default_minimum_lfs(lfs)).points;
       const Reconstruction result = optimal_transport_reconstruction(points);
       expect_valid(points, result);
-      EXPECT_FALSE(result.edges.empty()) << "seed " << seed << ", epsilon " << epsilon << ": "
-                                         << result.points.size() << " isolated vertices only";
+      EXPECT_FALSE(result.edges.empty()) << spec << ", epsilon " << epsilon << ": " << result.points.size()
+                                         << " isolated vertices only";
+      const Topology t = topology(result);
+      polygons += t.components == 1 && t.cycles == 1;
+      ++cases;
     }
+  std::cout << "one closed polygon on " << polygons << " of " << cases << "\n";
+  // Measured 84 of 102; 81 when the run stopped at the first state without isolated
+  // vertices, not going on past a branching vertex.
+  EXPECT_GE(polygons, 84u);
 }
 
 TEST(OptimalTransport, StopsAtTheVertexCountOrTheTolerance) {
