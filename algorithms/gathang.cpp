@@ -115,13 +115,27 @@ std::vector<Edge> gathang_reconstruction(std::span<const Point> points, double a
     if ((vn == w && wn == v) || (v == w && vn == wn)) return CGAL::ZERO;
     return graphs::compare_lengths(dt.point(v), dt.point(vn), squared[v], dt.point(w), dt.point(wn), squared[w]);
   };
-  std::vector<Vertex> by_spacing(n);
-  std::iota(by_spacing.begin(), by_spacing.end(), Vertex{0});
-  std::sort(by_spacing.begin(), by_spacing.end(), [&](Vertex v, Vertex w) {
+  const auto before = [&](Vertex v, Vertex w) {
     auto order = compare_reach(nearest, nearest_reach, v, w);  // POSITIVE: v's is shorter
     if (order == CGAL::ZERO) order = compare_reach(next_nearest, next_reach, v, w);
     return order != CGAL::ZERO ? order == CGAL::POSITIVE : dt.point(v) < dt.point(w);
-  });
+  };
+  // Sorted by the rounded distance first, in place: the comparator above reads four points
+  // per call, which missed the cache at 10^6 points (as long as the triangulation). Where
+  // the filter separates two neighbouring keys, every key before is certainly shorter than
+  // every key after (the test is monotone in both), so only the runs it cannot separate
+  // need the exact comparator.
+  std::vector<std::pair<double, Vertex>> keyed(n);
+  for (Vertex v = 0; v < n; ++v) keyed[v] = {nearest_reach[v], v};
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Vertex> by_spacing(n);
+  for (std::size_t k = 0; k < n; ++k) by_spacing[k] = keyed[k].second;
+  for (std::size_t first = 0; first < n;) {
+    std::size_t last = first + 1;
+    while (last < n && !geometry::certain_sign_of_difference(keyed[last - 1].first, keyed[last].first)) ++last;
+    if (last - first > 1) std::sort(by_spacing.begin() + first, by_spacing.begin() + last, before);
+    first = last;
+  }
   for (const Vertex c : by_spacing) {
     if (proposed[c][1] != no_vertex || graph.degree(c) >= 2) continue;
     const Vertex a = proposed[c][0];
