@@ -58,6 +58,25 @@ RC_GTEST_PROP(ExactLengthOrder, MatchesTheBruteForceOnDegenerateInput, ()) {
   RC_ASSERT(sorted(points, edges) == brute_force_order(points, edges));
 }
 
+// Thousands of edges whose squares underflow, overflow or tie exactly: small integer
+// offsets at five scales, in random order (the keys 0 and +inf fall into runs that only
+// the exact comparison orders).
+RC_GTEST_PROP(ExactLengthOrder, MatchesTheBruteForceOnManyEdgesOfEveryScale, ()) {
+  const auto count = *rc::gen::inRange<std::size_t>(4096, 6000);
+  const auto offsets = *rc::gen::container<std::vector<std::tuple<int, int, int>>>(
+      count, rc::gen::tuple(rc::gen::element(-600, -30, 0, 30, 600), rc::gen::inRange(-8, 9), rc::gen::inRange(1, 9)));
+  std::vector<Point> points;
+  std::vector<Delaunay_edge> pairs;
+  for (const auto& [exponent, dx, dy] : offsets) {
+    const Vertex a = Vertex(points.size());
+    points.emplace_back(0.0, 0.0);
+    points.emplace_back(std::ldexp(dx, exponent), std::ldexp(dy, exponent));
+    pairs.push_back({a, a + 1, no_vertex, no_vertex});
+  }
+  const auto edges = with_lengths(points, pairs);
+  RC_ASSERT(sorted(points, edges) == brute_force_order(points, edges));
+}
+
 TEST(ExactLengthOrder, MatchesTheBruteForceOnAnEvenlySampledCurve) {
   const geometry::Curve curve = geometry::random_fourier_curve(3);
   const std::vector<Point> points = geometry::uniform_sampling(geometry::Local_feature_size(curve), 3000).points;
