@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <numbers>
+#include <utility>
 
 #include "algorithms/gathan.h"
 #include "graphs/delaunay_triangulation.h"
