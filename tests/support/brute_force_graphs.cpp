@@ -238,21 +238,28 @@ std::vector<Edge> brute_force_sphere_of_influence_graph(const std::vector<Point>
   });
 }
 
-std::vector<Edge> brute_force_k_nearest_neighbor_graph(const std::vector<Point>& points, std::size_t k) {
+std::vector<std::vector<std::size_t>> brute_force_k_nearest_neighbors(const std::vector<Point>& points, std::size_t k) {
   const auto pts = rational(points);
   const std::size_t n = pts.size();
-  std::vector<Edge> edges;
+  std::vector<std::vector<std::size_t>> ranked(n);
   for (std::size_t i = 0; i < n; ++i) {
-    std::vector<std::size_t> others;
+    std::vector<std::size_t>& others = ranked[i];
     for (std::size_t j = 0; j < n; ++j)
       if (j != i) others.push_back(j);
     std::sort(others.begin(), others.end(), [&](std::size_t a, std::size_t b) {
       const Q da = (pts[a] - pts[i]).norm2(), db = (pts[b] - pts[i]).norm2();
       return da < db || (da == db && a < b);
     });
-    for (std::size_t r = 0; r < std::min(k, others.size()); ++r)
-      edges.emplace_back(std::min(i, others[r]), std::max(i, others[r]));
+    others.resize(std::min(k, others.size()));
   }
+  return ranked;
+}
+
+std::vector<Edge> brute_force_k_nearest_neighbor_graph(const std::vector<Point>& points, std::size_t k) {
+  std::vector<Edge> edges;
+  const auto ranked = brute_force_k_nearest_neighbors(points, k);
+  for (std::size_t i = 0; i < ranked.size(); ++i)
+    for (const std::size_t j : ranked[i]) edges.emplace_back(std::min(i, j), std::max(i, j));
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;

@@ -41,6 +41,8 @@ std::vector<Edge> brute_force_relative_neighborhood_graph(const std::vector<Poin
 std::vector<Edge> brute_force_gabriel_graph(const std::vector<Point>& points);
 std::vector<Edge> brute_force_minimum_spanning_tree(const std::vector<Point>& points);  // Prim, exact order
 std::vector<Edge> brute_force_sphere_of_influence_graph(const std::vector<Point>& points);
+// Each point's k nearest other points, nearest first, equal distances by index.
+std::vector<std::vector<std::size_t>> brute_force_k_nearest_neighbors(const std::vector<Point>& points, std::size_t k);
 std::vector<Edge> brute_force_k_nearest_neighbor_graph(const std::vector<Point>& points, std::size_t k);
 std::vector<Edge> brute_force_alpha_shape_boundary(const std::vector<Point>& points, double alpha);
 
