@@ -85,5 +85,41 @@ RC_GTEST_PROP(CertainSignOfDifference, AgreesWithCgalDistanceComparison, ()) {
   }
 }
 
+// The refined filter decides what the cheap one cannot, and decides it right: segments
+// whose lengths agree to about 16 digits (cd is ab turned a quarter and moved, then its
+// coordinates nudged by a few ulps), at any scale.
+RC_GTEST_PROP(CertainSignOfRefinedDifference, AgreesWithCgalDistanceComparison, ()) {
+  const double scale = std::ldexp(1.0, *rc::gen::inRange(-1100, 1100));
+  const auto coordinate = rc::gen::map(rc::gen::inRange(-1000000, 1000001),
+                                       [scale](int i) { return static_cast<double>(i) * 1e-6 * scale; });
+  const auto nudge = [](double x, int ulps) {
+    for (; ulps > 0; --ulps) x = std::nextafter(x, HUGE_VAL);
+    for (; ulps < 0; ++ulps) x = std::nextafter(x, -HUGE_VAL);
+    return x;
+  };
+  const auto ulps = rc::gen::inRange(-3, 4);
+  const Point a(*coordinate, *coordinate), b(*coordinate, *coordinate), c(*coordinate, *coordinate);
+  const Point d(nudge(c.x() - (b.y() - a.y()), *ulps), nudge(c.y() + (b.x() - a.x()), *ulps));
+  const auto cheap = certain_sign_of_difference(squared_distance_approximation(a, b), squared_distance_approximation(c, d));
+  const auto refined = certain_sign_of_difference(refined_squared_distance(a, b), refined_squared_distance(c, d));
+  RC_TAG(cheap.has_value(), refined.has_value());
+  const auto expected = Kernel().compare_distance_2_object()(c, d, a, b);
+  const CGAL::Sign truth = expected == CGAL::LARGER ? CGAL::POSITIVE : expected == CGAL::SMALLER ? CGAL::NEGATIVE : CGAL::ZERO;
+  if (refined) {
+    RC_ASSERT(*refined == truth);
+  }
+  // Both filters decide only strict comparisons.
+  if (truth == CGAL::ZERO) {
+    RC_ASSERT(!refined.has_value());
+  }
+}
+
+TEST(CertainSignOfRefinedDifference, SettlesLengthsOneUlpApartThatTheCheapFilterCannot) {
+  const Point a(0, 0), b(0.1, 0.7), c(0, 0), d(0.7, std::nextafter(0.1, 1.0));  // |cd|^2 > |ab|^2 by 2^-57 of it
+  EXPECT_FALSE(certain_sign_of_difference(squared_distance_approximation(a, b), squared_distance_approximation(c, d)));
+  EXPECT_EQ(certain_sign_of_difference(refined_squared_distance(a, b), refined_squared_distance(c, d)), CGAL::POSITIVE);
+  EXPECT_EQ(certain_sign_of_difference(refined_squared_distance(c, d), refined_squared_distance(a, b)), CGAL::NEGATIVE);
+}
+
 }  // namespace
 }  // namespace curvebench::geometry
