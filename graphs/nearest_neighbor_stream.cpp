@@ -7,10 +7,16 @@
 
 namespace curvebench::graphs {
 
-Nearest_neighbor_stream::Nearest_neighbor_stream(const Delaunay_triangulation& dt, Vertex center)
-    : dt_(&dt), center_(center) {
-  seen_.push_back(center);
-  for (const Vertex w : dt.neighbors(center)) reach(w);
+Nearest_neighbor_stream::Nearest_neighbor_stream(const Delaunay_triangulation& dt, Vertex center) : dt_(&dt) {
+  restart(center);
+}
+
+void Nearest_neighbor_stream::restart(Vertex center) {
+  center_ = center;
+  frontier_.clear();
+  seen_.assign(1, center);
+  ready_.clear();
+  for (const Vertex w : dt_->neighbors(center)) reach(w);
 }
 
 bool Nearest_neighbor_stream::farther(Vertex a, Vertex b) const {

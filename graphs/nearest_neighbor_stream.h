@@ -22,6 +22,10 @@ class Nearest_neighbor_stream {
   // `dt` must outlive the stream.
   Nearest_neighbor_stream(const Delaunay_triangulation& dt, Vertex center);
 
+  // Starts again from another centre, keeping the storage: for one stream per point in
+  // turn (Lenz's probes), which would otherwise allocate three vectors each.
+  void restart(Vertex center);
+
   // The next nearest point, or no_vertex once every other point has been given.
   Vertex next();
 

@@ -1,6 +1,7 @@
 // graphs/nearest_neighbor_stream.h against a brute force: every other point, sorted by
 // exact squared distance (rationals) and then by index, on random points, grids full of
-// ties, collinear points, and coordinates at 2^-1000 and 2^1000.
+// ties, collinear points, and coordinates at 2^-1000 and 2^1000; and one stream restarted
+// from centre to centre.
 #include <gtest/gtest.h>
 
 #include <rapidcheck/gtest.h>
@@ -57,6 +58,15 @@ RC_GTEST_PROP(NearestNeighborStream, GivesEveryPointInExactDistanceThenIndexOrde
   std::shuffle(points.begin(), points.end(), std::default_random_engine(*rc::gen::arbitrary<unsigned>()));
   const Delaunay_triangulation dt(points);
   for (Vertex c = 0; c < points.size(); ++c) RC_ASSERT(streamed(dt, c) == brute_force_order(points, c));
+  // One stream restarted at each centre in turn, cut short at a random depth (as Lenz's
+  // probes use it): what was left of the last centre must not leak into the next.
+  Nearest_neighbor_stream stream(dt, 0);
+  for (Vertex c = 0; c < points.size(); ++c) {
+    stream.restart(c);
+    const std::vector<Vertex> expected = brute_force_order(points, c);
+    const std::size_t depth = *rc::gen::inRange<std::size_t>(0, expected.size() + 2);
+    for (std::size_t k = 0; k < depth; ++k) RC_ASSERT(stream.next() == (k < expected.size() ? expected[k] : no_vertex));
+  }
 }
 
 TEST(NearestNeighborStream, CollinearAndTinyInput) {
