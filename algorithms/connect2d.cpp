@@ -94,13 +94,8 @@ class Connect2d {
   // Ranks of the Delaunay edges in exact length order (ties by end indices): the keys of
   // every queue below.
   void rank_edges() {
-    std::vector<graphs::Edge_with_length> sorted = graphs::with_lengths(dt_.points(), dt_.edges());
-    graphs::sort_by_exact_length(dt_.points(), sorted);
-    by_rank_.resize(sorted.size());
-    for (std::uint32_t r = 0; r < sorted.size(); ++r) {
-      by_rank_[r] = index_.find(sorted[r].source, sorted[r].target);
-      rank_[by_rank_[r]] = r;
-    }
+    by_rank_ = graphs::edge_ids_by_exact_length(dt_.points(), dt_.edges());
+    for (std::uint32_t r = 0; r < by_rank_.size(); ++r) rank_[by_rank_[r]] = r;
   }
 
   // Step 1: the EMST (Kruskal), then every edge, shortest first, with an end of valence < 2.

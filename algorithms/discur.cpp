@@ -134,8 +134,11 @@ std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_
     return std::find(ranked.begin() + v * k, ranked.begin() + (v + 1) * k, w) != ranked.begin() + (v + 1) * k;
   };
 
+  // The Delaunay edges shortest first, sorted a stretch at a time and each time without
+  // those that can no longer be taken (an end of degree two keeps it): on a sampled curve
+  // the first n settle almost every point, and little of the other 2n is ever sorted.
   std::vector<graphs::Edge_with_length> sorted = graphs::with_lengths(dt.points(), dt.edges());
-  graphs::sort_by_exact_length(dt.points(), sorted);
+  std::size_t sorted_end = 0;
   const auto& at = [&](Vertex v) -> const Point& { return dt.point(v); };
   const auto longer = [&](const std::array<Vertex, 2>& e, const std::array<Vertex, 2>& f) {
     return graphs::compare_lengths(at(f[0]), at(f[1]), at(e[0]), at(e[1])) == CGAL::POSITIVE;
@@ -193,12 +196,20 @@ std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_
 
   std::vector<Edge> edges;
   std::vector<bool> taken(sorted.size(), false);
-  for (std::uint32_t next = 0; next < sorted.size() || !retry.empty();) {
+  for (std::uint32_t next = 0;;) {
     std::uint32_t e;
     if (!retry.empty()) {
       e = retry.top();
       retry.pop();
     } else {
+      if (next == sorted_end) {
+        const auto closed = [&](const graphs::Edge_with_length& c) {
+          return paths.degree(c.source) == 2 || paths.degree(c.target) == 2;
+        };
+        sorted.erase(std::remove_if(sorted.begin() + next, sorted.end(), closed), sorted.end());
+        if (next == sorted.size()) break;
+        sorted_end = graphs::sort_shortest_by_exact_length(dt.points(), sorted, next, std::max<std::size_t>(next, n));
+      }
       e = next++;
     }
     const Vertex a = sorted[e].source, b = sorted[e].target;

@@ -8,6 +8,7 @@
 // is the exact order. (Keys below 2^-900 may carry subnormal error: never split after one.)
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -28,5 +29,18 @@ std::vector<Edge_with_length> with_lengths(std::span<const Point> points, std::s
 // Sorts by exact squared length, ties by (source, target): a total order, so the result
 // does not depend on the input order.
 void sort_by_exact_length(std::span<const Point> points, std::vector<Edge_with_length>& edges);
+
+// Sorts only the shortest of edges[begin...]: afterwards edges[begin, end) holds at least
+// `count` of them (all, if fewer are left) in the order sort_by_exact_length gives, and
+// each edge after `end` is longer than each before. Returns end. For greedy algorithms
+// that go on from `end` later, or never: DISCUR, having dropped the edges it can no
+// longer take, sorts a fraction of the Delaunay edges.
+std::size_t sort_shortest_by_exact_length(std::span<const Point> points, std::vector<Edge_with_length>& edges,
+                                          std::size_t begin, std::size_t count);
+
+// The positions in `edges` in the same order: the r-th shortest is edges[result[r]]. For
+// algorithms that keep per-edge state by position, which looking each sorted edge up by its
+// ends would reach through a cache miss per edge.
+std::vector<std::uint32_t> edge_ids_by_exact_length(std::span<const Point> points, std::span<const Delaunay_edge> edges);
 
 }  // namespace curvebench::graphs

@@ -2,7 +2,8 @@
 // rationals, ties by (source, target). On degenerate point sets at every scale, on an evenly
 // sampled curve (whose edges agree in length to 15 digits, the case the finer keys are
 // for), and on lengths that differ by 2^-100 and 2^-88 of themselves (below and above what
-// the finer keys separate) or not at all.
+// the finer keys separate) or not at all. edge_ids_by_exact_length (the same sort giving
+// positions) and sort_shortest_by_exact_length (a stretch of it) on degenerate input.
 #include <gtest/gtest.h>
 
 #include <rapidcheck/gtest.h>
@@ -47,15 +48,48 @@ std::vector<std::pair<Vertex, Vertex>> sorted(std::span<const Point> points, std
   return order;
 }
 
-std::vector<Edge_with_length> delaunay_edges(std::span<const Point> points) {
-  const Delaunay_triangulation dt(points);
-  return with_lengths(points, dt.edges());
+// The order of edge_ids_by_exact_length, as end points.
+std::vector<std::pair<Vertex, Vertex>> sorted_ids(std::span<const Point> points, std::span<const Delaunay_edge> edges) {
+  std::vector<std::pair<Vertex, Vertex>> order;
+  for (const std::uint32_t id : edge_ids_by_exact_length(points, edges))
+    order.emplace_back(edges[id].source, edges[id].target);
+  return order;
 }
 
 RC_GTEST_PROP(ExactLengthOrder, MatchesTheBruteForceOnDegenerateInput, ()) {
   const std::vector<Point> points = *testing::point_sets(40);
-  const auto edges = delaunay_edges(points);
-  RC_ASSERT(sorted(points, edges) == brute_force_order(points, edges));
+  const Delaunay_triangulation dt(points);
+  const auto edges = with_lengths(points, dt.edges());
+  const auto expected = brute_force_order(points, edges);
+  RC_ASSERT(sorted(points, edges) == expected);
+  RC_ASSERT(sorted_ids(points, dt.edges()) == expected);
+}
+
+// A stretch sorted from a random position: what comes before stays, the stretch is the
+// brute-force order's head of what came after (at least `count` of it), and the rest is
+// the rest of it, in some order.
+RC_GTEST_PROP(ExactLengthOrder, SortsTheShortestStretchAsTheBruteForce, ()) {
+  const std::vector<Point> points = *testing::point_sets(40);
+  const Delaunay_triangulation dt(points);
+  std::vector<Edge_with_length> edges = with_lengths(points, dt.edges());
+  const auto begin = *rc::gen::inRange<std::size_t>(0, edges.size() + 1);
+  const auto count = *rc::gen::inRange<std::size_t>(0, edges.size() + 2);
+  const std::vector<Edge_with_length> before(edges.begin(), edges.begin() + std::ptrdiff_t(begin));
+  const auto expected = brute_force_order(points, {edges.begin() + std::ptrdiff_t(begin), edges.end()});
+  const std::size_t end = sort_shortest_by_exact_length(points, edges, begin, count);
+  RC_ASSERT(end >= begin + std::min(count, edges.size() - begin));
+  RC_ASSERT(end <= edges.size());
+  std::vector<std::pair<Vertex, Vertex>> prefix, stretch, rest;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    (i < begin ? prefix : i < end ? stretch : rest).emplace_back(edges[i].source, edges[i].target);
+  std::vector<std::pair<Vertex, Vertex>> expected_prefix;
+  for (const Edge_with_length& e : before) expected_prefix.emplace_back(e.source, e.target);
+  RC_ASSERT(prefix == expected_prefix);
+  RC_ASSERT(stretch == std::vector(expected.begin(), expected.begin() + std::ptrdiff_t(stretch.size())));
+  std::sort(rest.begin(), rest.end());
+  std::vector expected_rest(expected.begin() + std::ptrdiff_t(stretch.size()), expected.end());
+  std::sort(expected_rest.begin(), expected_rest.end());
+  RC_ASSERT(rest == expected_rest);
 }
 
 // Thousands of edges whose squares underflow, overflow or tie exactly: small integer
@@ -80,8 +114,11 @@ RC_GTEST_PROP(ExactLengthOrder, MatchesTheBruteForceOnManyEdgesOfEveryScale, ())
 TEST(ExactLengthOrder, MatchesTheBruteForceOnAnEvenlySampledCurve) {
   const geometry::Curve curve = geometry::random_fourier_curve(3);
   const std::vector<Point> points = geometry::uniform_sampling(geometry::Local_feature_size(curve), 3000).points;
-  const auto edges = delaunay_edges(points);
-  EXPECT_EQ(sorted(points, edges), brute_force_order(points, edges));
+  const Delaunay_triangulation dt(points);
+  const auto edges = with_lengths(points, dt.edges());
+  const auto expected = brute_force_order(points, edges);
+  EXPECT_EQ(sorted(points, edges), expected);
+  EXPECT_EQ(sorted_ids(points, dt.edges()), expected);
 }
 
 // Squared lengths 2^100 + {0, 1, 2^12, 2^12, 2^13} and a copy of each shifted by 2^-20:
