@@ -61,7 +61,9 @@ void expect_valid(std::span<const Point> input, const Reconstruction& result) {
     const auto [i, j] = result.edges[k];
     EXPECT_LT(i, j);
     EXPECT_LT(j, result.points.size());
-    if (k > 0) EXPECT_LT(result.edges[k - 1], result.edges[k]);
+    if (k > 0) {
+      EXPECT_LT(result.edges[k - 1], result.edges[k]);
+    }
   }
 }
 
