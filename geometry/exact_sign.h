@@ -201,7 +201,8 @@ inline double squared_distance_approximation(const Point& a, const Point& b) {
 // exact as TwoSum pairs, the squares of their high parts exact as fma splits, and the
 // rest is below the square by 2^-52 or more and rounded once or twice.
 struct Refined_squared_distance {
-  double hi, lo;  // hi + lo, with |lo| at most half an ulp of hi
+  // The rounded sum.
+  double hi, lo;  // what rounding left off, at most half an ulp of hi
   // The order of hi + lo (lexicographic, since lo is below half an ulp of hi).
   friend bool operator<(const Refined_squared_distance& a, const Refined_squared_distance& b) {
     return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
