@@ -33,9 +33,9 @@
 // that cone is exact (geometry/exact_sign.h). The survey reports epsilon < 0.4 (and up to
 // 0.48 depending on alpha) as the paper's unproven claim.
 //
-// O(n log n): the triangulation, then k nearest neighbours by best-first search in it
-// (O(n k log k)); every step adds a new edge of the k-nearest-neighbour graph, so there are
-// at most n k steps of O(k) exact tests each.
+// O(n log n): the triangulation; then every step adds a new edge of the
+// k-nearest-neighbour graph, so there are at most n k steps, each drawing at most k of
+// the nearest points by best-first search in the triangulation (O(k log k), exact tests).
 #pragma once
 
 #include <span>
