@@ -213,8 +213,8 @@ RC_GTEST_PROP(KNearestNeighborGraph, EqualsBruteForce, ()) {
   RC_ASSERT(edges_of(k_nearest_neighbor_graph(points, k)) == testing::brute_force_k_nearest_neighbor_graph(points, k));
 }
 
-// The ranked lists themselves, nearest first (what Lenz's probe and the outlier filter
-// read), against the rational brute force that the graph test above flattens.
+// The ranked lists themselves, nearest first (what the outlier filter reads), against
+// the rational brute force that the graph test above flattens.
 RC_GTEST_PROP(KNearestNeighbors, RankAsTheBruteForce, ()) {
   const auto points = *point_sets(16);
   const auto k = *rc::gen::inRange<std::size_t>(0, 8);
