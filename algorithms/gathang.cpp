@@ -9,6 +9,7 @@
 #include "algorithms/gathan.h"
 #include "graphs/delaunay_triangulation.h"
 #include "geometry/exact_sign.h"
+#include "geometry/radix_sort.h"
 #include "graphs/proximity_predicates.h"
 
 namespace curvebench::algorithms {
@@ -127,7 +128,7 @@ std::vector<Edge> gathang_reconstruction(std::span<const Point> points, double a
   // need the exact comparator.
   std::vector<std::pair<double, Vertex>> keyed(n);
   for (Vertex v = 0; v < n; ++v) keyed[v] = {nearest_reach[v], v};
-  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  geometry::radix_sort_by_key(std::span(keyed), [](const auto& k) { return k.first; });
   std::vector<Vertex> by_spacing(n);
   for (std::size_t k = 0; k < n; ++k) by_spacing[k] = keyed[k].second;
   for (std::size_t first = 0; first < n;) {
