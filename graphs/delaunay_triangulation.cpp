@@ -81,14 +81,15 @@ void Delaunay_triangulation::triangulate() {
   // Walking faces is cheaper than CGAL's edge iterator, and indices (unlike face
   // addresses) make the choice the same on every run.
   for (const auto face : dt.finite_face_handles()) {
+    const Vertex corner[3] = {face->vertex(0)->info(), face->vertex(1)->info(), face->vertex(2)->info()};
     for (int i = 0; i < 3; ++i) {
       const auto neighbor = face->neighbor(i);
       const bool on_hull = dt.is_infinite(neighbor);
       // source -> target runs clockwise in `face`, which therefore lies on its right.
-      Delaunay_edge e{face->vertex(Cgal_delaunay::cw(i))->info(), face->vertex(Cgal_delaunay::ccw(i))->info(),
-                      on_hull ? no_vertex : neighbor->vertex(neighbor->index(face))->info(), face->vertex(i)->info()};
-      if (e.source > e.target) {
-        if (!on_hull) continue;
+      const Vertex source = corner[Cgal_delaunay::cw(i)], target = corner[Cgal_delaunay::ccw(i)];
+      if (source > target && !on_hull) continue;  // the other face has it; skip the apex lookup
+      Delaunay_edge e{source, target, on_hull ? no_vertex : neighbor->vertex(neighbor->index(face))->info(), corner[i]};
+      if (source > target) {
         std::swap(e.source, e.target);
         std::swap(e.left, e.right);
       }
