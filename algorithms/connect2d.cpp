@@ -65,12 +65,13 @@ class Connect2d {
       : dt_(dt), index_(dt), triangles_(dt, index_), rank_(dt.edges().size()), in_region_(triangles_.size(), false),
         region_degree_(dt.size(), 0), degree_(dt.size(), 0), on_hull_(dt.size(), false) {
     rank_edges();
-    for (Triangle t = 0; t < triangles_.size(); ++t)
-      for (int i = 0; i < 3; ++i) {
-        ++degree_[triangles_.corner(t, i)];
-        if (triangles_.across(t, i) == no_triangle)
-          on_hull_[triangles_.corner(t, (i + 1) % 3)] = on_hull_[triangles_.corner(t, (i + 2) % 3)] = true;
-      }
+    // A point has as many triangles as edges, one fewer on the hull, where it has two hull
+    // edges and a fan between them. (The input is not collinear: see connect2d_reconstruction.)
+    for (const Delaunay_edge& e : dt.edges()) {
+      ++degree_[e.source], ++degree_[e.target];
+      if (e.left == no_vertex || e.right == no_vertex) on_hull_[e.source] = on_hull_[e.target] = true;
+    }
+    for (Vertex v = 0; v < dt.size(); ++v) degree_[v] -= on_hull_[v];
   }
 
   void run() {

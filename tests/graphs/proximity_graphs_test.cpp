@@ -12,6 +12,7 @@
 
 #include "graphs/alpha_shape_boundary.h"
 #include "graphs/beta_skeleton.h"
+#include "graphs/delaunay_edge_index.h"
 #include "graphs/delaunay_graph.h"
 #include "graphs/euclidean_minimum_spanning_tree.h"
 #include "graphs/gabriel_graph.h"
@@ -77,6 +78,29 @@ RC_GTEST_PROP(DelaunayTriangulation, ApexesNeighborsAndNearestNeighborsAreConsis
         nearest = w;
     RC_ASSERT(dt.nearest_neighbor(v) == nearest);
   }
+}
+
+// Whether every edge's id comes back from its two ends, given either way round.
+bool finds_every_edge(const Delaunay_triangulation& dt) {
+  const Delaunay_edge_index index(dt);
+  for (Delaunay_edge_index::Edge_id id = 0; id < dt.edges().size(); ++id) {
+    const Delaunay_edge& e = dt.edges()[id];
+    if (index.find(e.source, e.target) != id || index.find(e.target, e.source) != id) return false;
+  }
+  return true;
+}
+
+RC_GTEST_PROP(DelaunayEdgeIndex, FindsEveryEdgeFromEitherEnd, ()) {
+  RC_ASSERT(finds_every_edge(Delaunay_triangulation(*point_sets(20))));
+}
+
+TEST(DelaunayEdgeIndex, FindsTheEdgesOfAWheelsHub) {
+  // The hub, point 0, is the smaller end of 200 edges: one long group to search.
+  std::vector<Point> wheel{{0, 0}};
+  for (int i = 0; i < 200; ++i) wheel.emplace_back(std::cos(i * 0.0314), std::sin(i * 0.0314));
+  const Delaunay_triangulation dt(wheel);
+  ASSERT_EQ(dt.neighbors(0).size(), 200u);
+  EXPECT_TRUE(finds_every_edge(dt));
 }
 
 RC_GTEST_PROP(DelaunayGraph, DoesNotDependOnInputOrder, ()) {
