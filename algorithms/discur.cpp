@@ -73,6 +73,12 @@ class Paths {
     }
   }
 
+  // Starts loading what degree() and find() read of v. Edges come in length order, so
+  // their ends are scattered and each first read of one would wait on memory.
+  void prefetch(Vertex v) const {
+    __builtin_prefetch(&links_[v]);
+    __builtin_prefetch(&parent_[v]);
+  }
   int degree(Vertex v) const { return (links_[v][0] != no_vertex) + (links_[v][1] != no_vertex); }
   Vertex end_neighbor(Vertex v) const { return links_[v][0]; }  // the one link of a degree-1 point
   Vertex find(Vertex v) {
@@ -211,6 +217,10 @@ std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_
         sorted_end = graphs::sort_shortest_by_exact_length(dt.points(), sorted, next, std::max<std::size_t>(next, n));
       }
       e = next++;
+      if (const std::uint32_t ahead = e + 16; ahead < sorted_end) {
+        paths.prefetch(sorted[ahead].source);
+        paths.prefetch(sorted[ahead].target);
+      }
     }
     const Vertex a = sorted[e].source, b = sorted[e].target;
     if (taken[e] || paths.degree(a) == 2 || paths.degree(b) == 2) continue;
