@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "geometry/exact_sign.h"
 #include "geometry/radix_sort.h"
 #include "graphs/proximity_predicates.h"
 
@@ -23,10 +24,9 @@ std::vector<Edge_with_length> with_lengths(std::span<const Point> points, std::s
 namespace {
 
 // Whether every key up to shorter_key is certainly shorter than every key from longer_key
-// on (see the header).
+// on (see the header): the filter GathanG's corner order splits its runs by, too.
 bool separated(double shorter_key, double longer_key) {
-  return shorter_key >= 0x1p-900 && std::isfinite(longer_key) &&
-         longer_key - shorter_key > (shorter_key + longer_key) * 0x1p-48;
+  return geometry::certain_sign_of_difference(shorter_key, longer_key) == CGAL::POSITIVE;
 }
 
 // The sort for any edge record with a rounded squared_length and end points source < target.

@@ -5,7 +5,8 @@
 // of consecutive keys that the floating-point filter cannot tell apart. Where it can, the
 // keys' error intervals k (1 +- 2^-48) are disjoint, and since both ends grow with k,
 // every key before that point is certainly shorter than every key after it: the result
-// is the exact order. (Keys below 2^-900 may carry subnormal error: never split after one.)
+// is the exact order. (Keys whose sum is below 2^-900 may carry subnormal error: never
+// split between two of them. This is geometry::certain_sign_of_difference.)
 #pragma once
 
 #include <cstdint>
