@@ -10,6 +10,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -40,8 +41,8 @@ void radix_sort_by_key(std::span<Record> records, Key key) {
     const std::uint64_t bits = ordered_bits(key(r));
     for (int pass = 0; pass < passes; ++pass) ++count[pass][digit(bits, pass)];
   }
-  std::vector<Record> buffer(records.size());
-  std::span<Record> from = records, to = buffer;
+  const auto buffer = std::make_unique_for_overwrite<Record[]>(records.size());  // every slot is written first
+  std::span<Record> from = records, to(buffer.get(), records.size());
   for (int pass = 0; pass < passes; ++pass) {
     auto& start = count[pass];
     if (std::count(start.begin(), start.end(), 0) == radix - 1) continue;  // one digit throughout
