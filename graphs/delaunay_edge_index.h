@@ -1,7 +1,7 @@
 // Edge uv of a Delaunay triangulation by its end points: the position of uv in
 // dt.edges(), found in O(log degree) among the edges whose smaller end is min(u, v),
-// sorted by the larger one. Algorithms that keep per-edge state (a sculpting's boundary, a labelling's
-// dual edges) look edges up by their triangles' corners with it.
+// sorted by the larger one. Algorithms that keep per-edge state (a sculpting's boundary,
+// a labelling's dual edges) look edges up by their triangles' corners with it.
 #pragma once
 
 #include <algorithm>
