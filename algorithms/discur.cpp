@@ -7,6 +7,7 @@
 #include <numbers>
 #include <queue>
 #include <stdexcept>
+#include <utility>
 
 #include "graphs/delaunay_triangulation.h"
 #include "graphs/exact_length_order.h"
@@ -62,14 +63,14 @@ std::vector<Vertex> nearest_ranks(const Delaunay_triangulation& dt, std::size_t 
 }
 
 // The growing curves: each point's up to two links, and per path (a union-find root)
-// its ends, its size and its longest edge.
+// one record of what the acceptance test and link() read, so that reaching a path costs
+// one cache miss rather than one per field.
 class Paths {
  public:
-  explicit Paths(std::size_t n) : links_(n, {no_vertex, no_vertex}), parent_(n), size_(n, 1), ends_(n), longest_(n) {
+  explicit Paths(std::size_t n) : links_(n, {no_vertex, no_vertex}), parent_(n), paths_(n) {
     for (Vertex v = 0; v < n; ++v) {
       parent_[v] = v;
-      ends_[v] = {v, v};
-      longest_[v] = {no_vertex, no_vertex};
+      paths_[v] = {.ends = {v, v}, .longest = {no_vertex, no_vertex}, .size = 1, .waited_at = {false, false}};
     }
   }
 
@@ -79,15 +80,30 @@ class Paths {
     __builtin_prefetch(&links_[v]);
     __builtin_prefetch(&parent_[v]);
   }
+  // The second stage, once prefetch(v) has had time: the record of v's parent, which after
+  // path halving is mostly its root.
+  void prefetch_path(Vertex v) const {
+    __builtin_prefetch(&paths_[parent_[v]]);
+    __builtin_prefetch(&parent_[parent_[v]]);
+  }
   int degree(Vertex v) const { return (links_[v][0] != no_vertex) + (links_[v][1] != no_vertex); }
   Vertex end_neighbor(Vertex v) const { return links_[v][0]; }  // the one link of a degree-1 point
   Vertex find(Vertex v) {
     while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
     return v;
   }
-  std::size_t size(Vertex root) const { return size_[root]; }
-  const std::array<Vertex, 2>& ends(Vertex root) const { return ends_[root]; }
-  const std::array<Vertex, 2>& longest(Vertex root) const { return longest_[root]; }  // no_vertex if none
+  std::size_t size(Vertex root) const { return paths_[root].size; }
+  const std::array<Vertex, 2>& ends(Vertex root) const { return paths_[root].ends; }
+  const std::array<Vertex, 2>& longest(Vertex root) const { return paths_[root].longest; }  // no_vertex if none
+
+  // Notes that edges wait at v, an end of its path (a point of degree 0 or 1).
+  void mark_waiting(Vertex v) {
+    Path& path = paths_[find(v)];
+    for (int i : {0, 1})
+      if (path.ends[i] == v) path.waited_at[i] = true;
+  }
+  // Whether edges wait at end i of root's path, which stops being so: the caller wakes them.
+  bool take_waiting(Vertex root, int i) { return std::exchange(paths_[root].waited_at[i], false); }
 
   // Links a and b, which are ends of different paths or of the same one (closing it);
   // `longer` says whether edge ab is longer than an edge given as two points. Returns
@@ -97,28 +113,36 @@ class Paths {
     links_[a][degree(a)] = b;
     links_[b][degree(b)] = a;
     const Vertex ra = find(a), rb = find(b);
-    std::array<Vertex, 2> longest = longest_[ra];
-    if (longest[0] == no_vertex || (longest_[rb][0] != no_vertex && longer(longest_[rb], longest))) longest = longest_[rb];
+    const Path &path_a = paths_[ra], &path_b = paths_[rb];
+    std::array<Vertex, 2> longest = path_a.longest;
+    if (longest[0] == no_vertex || (path_b.longest[0] != no_vertex && longer(path_b.longest, longest))) longest = path_b.longest;
     if (longest[0] == no_vertex || longer(std::array<Vertex, 2>{a, b}, longest)) longest = {a, b};
     if (ra == rb) {  // a cycle: no ends left
-      longest_[ra] = longest;
-      ends_[ra] = {no_vertex, no_vertex};
+      paths_[ra] = {.ends = {no_vertex, no_vertex}, .longest = longest, .size = path_a.size, .waited_at = {false, false}};
       return ra;
     }
-    const Vertex other_a = ends_[ra][0] == a ? ends_[ra][1] : ends_[ra][0];
-    const Vertex other_b = ends_[rb][0] == b ? ends_[rb][1] : ends_[rb][0];
-    const auto [root, child] = size_[ra] >= size_[rb] ? std::pair{ra, rb} : std::pair{rb, ra};
+    // The merged path's ends: the far end of a's path, then that of b's.
+    const int far_a = path_a.ends[0] == a ? 1 : 0, far_b = path_b.ends[0] == b ? 1 : 0;
+    const Path merged{.ends = {path_a.ends[far_a], path_b.ends[far_b]},
+                      .longest = longest,
+                      .size = path_a.size + path_b.size,
+                      .waited_at = {path_a.waited_at[far_a], path_b.waited_at[far_b]}};
+    const auto [root, child] = path_a.size >= path_b.size ? std::pair{ra, rb} : std::pair{rb, ra};
     parent_[child] = root;
-    size_[root] += size_[child];
-    ends_[root] = {other_a, other_b};
-    longest_[root] = longest;
+    paths_[root] = merged;
     return root;
   }
 
  private:
+  struct alignas(32) Path {
+    std::array<Vertex, 2> ends;        // no_vertex once closed
+    std::array<Vertex, 2> longest;     // its longest edge, no_vertex if none
+    Vertex size;                       // points
+    std::array<bool, 2> waited_at;     // whether edges wait at ends[i]
+  };
   std::vector<std::array<Vertex, 2>> links_;
-  std::vector<Vertex> parent_, size_;
-  std::vector<std::array<Vertex, 2>> ends_, longest_;
+  std::vector<Vertex> parent_;
+  std::vector<Path> paths_;  // by root
 };
 
 void check(const Curve_growth_rules& rules) {
@@ -188,6 +212,7 @@ std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_
       waiting[slot] = true;
       pending_next[slot] = pending_head[v];
       pending_head[v] = slot;
+      paths.mark_waiting(v);
     }
   };
   // Retried edges are shorter than every edge not yet taken, so they go first.
@@ -220,6 +245,12 @@ std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_
       if (const std::uint32_t ahead = e + 16; ahead < sorted_end) {
         paths.prefetch(sorted[ahead].source);
         paths.prefetch(sorted[ahead].target);
+        __builtin_prefetch(&at(sorted[ahead].source));
+        __builtin_prefetch(&at(sorted[ahead].target));
+      }
+      if (const std::uint32_t ahead = e + 8; ahead < sorted_end) {
+        paths.prefetch_path(sorted[ahead].source);
+        paths.prefetch_path(sorted[ahead].target);
       }
     }
     const Vertex a = sorted[e].source, b = sorted[e].target;
@@ -235,8 +266,10 @@ std::vector<Edge> grow_curves(std::span<const Point> points, const Curve_growth_
     // An end whose path got a longer longest edge may now accept what it rejected. The
     // merged path's ends are (the far end of a's path, the far end of b's path).
     const auto [end_a, end_b] = paths.ends(root);
-    if (end_a != no_vertex && paths.longest(root) != old_a) wake(end_a);
-    if (end_b != no_vertex && paths.longest(root) != old_b) wake(end_b);
+    // Paths know which of their ends have edges waiting, so a far end with none (most of
+    // them) is not read: it would be a cache miss per link.
+    if (end_a != no_vertex && paths.longest(root) != old_a && paths.take_waiting(root, 0)) wake(end_a);
+    if (end_b != no_vertex && paths.longest(root) != old_b && paths.take_waiting(root, 1)) wake(end_b);
   }
   return geometry::canonical_edges(std::move(edges));
 }
