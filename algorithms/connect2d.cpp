@@ -7,7 +7,6 @@
 #include <queue>
 #include <tuple>
 
-#include "graphs/delaunay_edge_index.h"
 #include "graphs/delaunay_triangulation.h"
 #include "graphs/exact_length_order.h"
 
@@ -16,53 +15,17 @@ namespace {
 
 using graphs::Delaunay_edge;
 using graphs::Delaunay_triangulation;
+using graphs::Edge_id;
+using graphs::no_triangle;
 using graphs::no_vertex;
 using graphs::Vertex;
-using Edge_id = graphs::Delaunay_edge_index::Edge_id;
-using Triangle = std::uint32_t;
-constexpr Triangle no_triangle = graphs::no_vertex;
-
-// The finite Delaunay triangles as index arrays: corners counter-clockwise, side i opposite
-// corner i, and every edge's triangle on its left and right (of source -> target).
-class Triangles {
- public:
-  Triangles(const Delaunay_triangulation& dt, const graphs::Delaunay_edge_index& index)
-      : sides_of_edge_(dt.edges().size(), {no_triangle, no_triangle}) {
-    const auto edges = dt.edges();
-    for (Edge_id id = 0; id < edges.size(); ++id) {
-      const Delaunay_edge& e = edges[id];
-      // Each triangle once: from the edge leaving its smallest corner counter-clockwise.
-      if (e.left == no_vertex || e.left < e.source) continue;
-      const Triangle t = Triangle(corners_.size());
-      corners_.push_back({e.source, e.target, e.left});
-      side_edges_.push_back({index.find(e.target, e.left), index.find(e.left, e.source), id});
-      for (int i = 0; i < 3; ++i) {
-        const Vertex from = corners_[t][(i + 1) % 3];
-        const Edge_id side = side_edges_[t][i];
-        sides_of_edge_[side][edges[side].source == from ? 0 : 1] = t;
-      }
-    }
-  }
-
-  std::size_t size() const { return corners_.size(); }
-  Vertex corner(Triangle t, int i) const { return corners_[t][i]; }
-  Edge_id side(Triangle t, int i) const { return side_edges_[t][i]; }
-  // The triangle across side i, or no_triangle on the convex hull.
-  Triangle across(Triangle t, int i) const {
-    const auto& two = sides_of_edge_[side_edges_[t][i]];
-    return two[0] == t ? two[1] : two[0];
-  }
-
- private:
-  std::vector<std::array<Vertex, 3>> corners_;
-  std::vector<std::array<Edge_id, 3>> side_edges_;
-  std::vector<std::array<Triangle, 2>> sides_of_edge_;
-};
+using Triangle = graphs::Triangle_id;
 
 class Connect2d {
  public:
+  // `dt` keeps its triangles (graphs::Keep_triangles::yes) and is not collinear.
   explicit Connect2d(const Delaunay_triangulation& dt)
-      : dt_(dt), index_(dt), triangles_(dt, index_), rank_(dt.edges().size()), in_region_(triangles_.size(), false),
+      : dt_(dt), triangles_(dt.triangles()), rank_(dt.edges().size()), in_region_(triangles_.size(), false),
         region_degree_(dt.size(), 0), degree_(dt.size(), 0), on_hull_(dt.size(), false) {
     rank_edges();
     // A point has as many triangles as edges, one fewer on the hull, where it has two hull
@@ -86,8 +49,8 @@ class Connect2d {
     for (Triangle t = 0; t < triangles_.size(); ++t)
       if (in_region_[t])
         for (int i = 0; i < 3; ++i)
-          if (!in_region(triangles_.across(t, i)))
-            result.emplace_back(triangles_.corner(t, (i + 1) % 3), triangles_.corner(t, (i + 2) % 3));
+          if (!in_region(triangles_[t].across[i]))
+            result.emplace_back(triangles_[t].corners[(i + 1) % 3], triangles_[t].corners[(i + 2) % 3]);
     return geometry::canonical_edges(std::move(result));
   }
 
@@ -133,13 +96,13 @@ class Connect2d {
     };
     for (Triangle t = 0; t < triangles_.size(); ++t)
       for (int i = 0; i < 3; ++i)
-        if (triangles_.across(t, i) == no_triangle && !in_bc[triangles_.side(t, i)]) reach(t);
+        if (triangles_[t].across[i] == no_triangle && !in_bc[triangles_[t].sides[i]]) reach(t);
     while (!stack.empty()) {
       const Triangle t = stack.back();
       stack.pop_back();
       for (int i = 0; i < 3; ++i) {
-        const Triangle u = triangles_.across(t, i);
-        if (u != no_triangle && !in_bc[triangles_.side(t, i)]) reach(u);
+        const Triangle u = triangles_[t].across[i];
+        if (u != no_triangle && !in_bc[triangles_[t].sides[i]]) reach(u);
       }
     }
   }
@@ -152,7 +115,7 @@ class Connect2d {
   // triangles share at most one side), so no tie depends on how triangles are numbered.
   using Sides = std::array<std::uint32_t, 3>;
   Sides sides_by_length(Triangle t) const {
-    Sides r{rank_[triangles_.side(t, 0)], rank_[triangles_.side(t, 1)], rank_[triangles_.side(t, 2)]};
+    Sides r{rank_[triangles_[t].sides[0]], rank_[triangles_[t].sides[1]], rank_[triangles_[t].sides[2]]};
     std::sort(r.begin(), r.end(), std::greater<>());
     return r;
   }
@@ -164,9 +127,9 @@ class Connect2d {
   int join_class(Triangle t) const {
     int touching = 0, side = 0;
     for (int i = 0; i < 3; ++i)
-      if (in_region(triangles_.across(t, i))) ++touching, side = i;
+      if (in_region(triangles_[t].across[i])) ++touching, side = i;
     if (touching == 0 || touching == 3) return no_class;
-    if (touching == 1 && reached(triangles_.corner(t, side))) return no_class;  // a pinch
+    if (touching == 1 && reached(triangles_[t].corners[side])) return no_class;  // a pinch
     return inside_[t] ? 0 : touching;
   }
 
@@ -190,8 +153,8 @@ class Connect2d {
     const auto add = [&](Triangle t) {
       in_region_[t] = true;
       for (int i = 0; i < 3; ++i)
-        if (region_degree_[triangles_.corner(t, i)]++ == 0) --outside;
-      for (int i = 0; i < 3; ++i) offer(triangles_.across(t, i), queue);
+        if (region_degree_[triangles_[t].corners[i]]++ == 0) --outside;
+      for (int i = 0; i < 3; ++i) offer(triangles_[t].across[i], queue);
     };
     add(seed);
     while (!queue.empty()) {
@@ -217,32 +180,31 @@ class Connect2d {
     std::size_t interior_points = 0;
     for (Vertex v = 0; v < dt_.size(); ++v) interior_points += interior(v);
     const auto offer_cut = [&](Triangle t, int i) {
-      if (interior(triangles_.corner(t, i))) queue.emplace(rank_[triangles_.side(t, i)], t, i);
+      if (interior(triangles_[t].corners[i])) queue.emplace(rank_[triangles_[t].sides[i]], t, i);
     };
     for (Triangle t = 0; t < triangles_.size(); ++t)
       if (in_region_[t])
         for (int i = 0; i < 3; ++i)
-          if (!in_region(triangles_.across(t, i))) offer_cut(t, i);
+          if (!in_region(triangles_[t].across[i])) offer_cut(t, i);
     while (interior_points > 0 && !queue.empty()) {
       const auto [key, t, i] = queue.top();
       queue.pop();
       // Once outside, a triangle stays outside, so the side stays a boundary edge; the apex
       // can only have reached the boundary meanwhile, and then stays there.
-      if (!in_region_[t] || !interior(triangles_.corner(t, i))) continue;
+      if (!in_region_[t] || !interior(triangles_[t].corners[i])) continue;
       in_region_[t] = false;
-      for (int k = 0; k < 3; ++k) --region_degree_[triangles_.corner(t, k)];
+      for (int k = 0; k < 3; ++k) --region_degree_[triangles_[t].corners[k]];
       --interior_points;  // the apex; the other two corners were on the boundary
       for (const int k : {(i + 1) % 3, (i + 2) % 3}) {
-        const Triangle u = triangles_.across(t, k);  // in the region: the apex was interior
+        const Triangle u = triangles_[t].across[k];  // in the region: the apex was interior
         for (int j = 0; j < 3; ++j)
-          if (triangles_.across(u, j) == t) offer_cut(u, j);
+          if (triangles_[u].across[j] == t) offer_cut(u, j);
       }
     }
   }
 
   const Delaunay_triangulation& dt_;
-  graphs::Delaunay_edge_index index_;
-  Triangles triangles_;
+  std::span<const graphs::Delaunay_triangle> triangles_;
   std::vector<std::uint32_t> rank_;  // by edge id
   std::vector<Edge_id> by_rank_;
   std::vector<bool> inside_;     // by triangle
@@ -254,7 +216,7 @@ class Connect2d {
 }  // namespace
 
 std::vector<Edge> connect2d_reconstruction(std::span<const Point> points) {
-  const Delaunay_triangulation dt(points);
+  const Delaunay_triangulation dt(points, graphs::Keep_triangles::yes);
   const bool collinear = std::none_of(dt.edges().begin(), dt.edges().end(),
                                       [](const Delaunay_edge& e) { return e.left != no_vertex || e.right != no_vertex; });
   if (collinear) {  // the chain (or nothing): no polygon exists

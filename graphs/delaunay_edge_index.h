@@ -18,8 +18,7 @@ namespace curvebench::graphs {
 // triangulation.
 class Delaunay_edge_index {
  public:
-  // A position in dt.edges().
-  using Edge_id = std::uint32_t;
+  using Edge_id = graphs::Edge_id;  // a position in dt.edges()
 
   // Indexes every edge of `dt` under its smaller end (its source): each edge once, and
   // three a vertex on average, so half the memory of listing both ends.

@@ -3,11 +3,12 @@
 //
 // Built once with CGAL (spatially sorted insertion; CGAL breaks cocircular ties by a
 // symbolic perturbation, so the triangulation does not depend on the input order), then
-// read through plain arrays: each finite edge with the vertices opposite it, and each
-// vertex's neighbours. Collinear input (CGAL dimension 1) gives the chain of consecutive
-// points; 0 or 1 point gives no edge.
+// read through plain arrays: each finite edge with the vertices opposite it, each
+// vertex's neighbours and, when asked for, the triangles. Collinear input (CGAL
+// dimension 1) gives the chain of consecutive points; 0 or 1 point gives no edge.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -23,6 +24,13 @@ using Vertex = std::uint32_t;
 // No vertex: the missing apex of a hull edge, or the nearest neighbour of a lone point.
 inline constexpr Vertex no_vertex = std::numeric_limits<Vertex>::max();
 
+// A position in Delaunay_triangulation::edges().
+using Edge_id = std::uint32_t;
+// A position in Delaunay_triangulation::triangles().
+using Triangle_id = std::uint32_t;
+// No triangle: across a side on the convex hull.
+inline constexpr Triangle_id no_triangle = std::numeric_limits<Triangle_id>::max();
+
 // A finite edge of the triangulation with the apexes of the triangles on its two sides.
 struct Delaunay_edge {
   // The end with the smaller index.
@@ -30,6 +38,18 @@ struct Delaunay_edge {
   // The apex of the triangle left of source -> target, or no_vertex (a hull edge, collinear input).
   Vertex left, right;     // apex of the triangle left / right of source -> target, or no_vertex
 };
+
+// A finite triangle: its corners counterclockwise and, for each side i (the edge opposite
+// corner i), that edge and the triangle across it.
+struct Delaunay_triangle {
+  std::array<Vertex, 3> corners;      // counterclockwise
+  std::array<Edge_id, 3> sides;       // side i, opposite corners[i]
+  std::array<Triangle_id, 3> across;  // across side i; no_triangle on the convex hull
+};
+
+// Whether a triangulation also keeps its triangles(): 2n of them at 36 bytes each, for
+// the algorithms that walk triangles (Connect2D) and no one else.
+enum class Keep_triangles : bool { no, yes };
 
 // Whether all points lie on one line (exact; equal points count as collinear). CGAL
 // inserts collinear points one by one into a chain it walks, quadratically (10^5 of them
@@ -42,7 +62,7 @@ class Delaunay_triangulation {
  public:
   // Throws std::invalid_argument if two points are equal (merge them first, see
   // geometry::PointSet) or a coordinate is not finite.
-  explicit Delaunay_triangulation(std::span<const Point> points);
+  explicit Delaunay_triangulation(std::span<const Point> points, Keep_triangles keep = Keep_triangles::no);
 
   // The input points, as given (the span, not a copy).
   std::span<const Point> points() const { return points_; }
@@ -55,6 +75,11 @@ class Delaunay_triangulation {
   // what they output, and sorting 3n edges here would cost a third of the triangulation).
   std::span<const Delaunay_edge> edges() const { return edges_; }
 
+  // The finite triangles, in an order fixed by the input, read from the same walk over
+  // CGAL's faces as the edges (where looking sides up by their ends afterwards cost more
+  // than the walk). Empty unless kept at construction, and for collinear input.
+  std::span<const Delaunay_triangle> triangles() const { return triangles_; }
+
   // The Delaunay neighbours of v, in the order of their edges in edges() (not sorted).
   std::span<const Vertex> neighbors(Vertex v) const {
     return {neighbors_.data() + first_neighbor_[v], neighbors_.data() + first_neighbor_[v + 1]};
@@ -65,12 +90,14 @@ class Delaunay_triangulation {
   Vertex nearest_neighbor(Vertex v) const;
 
  private:
+  template <class Face_base>
   void triangulate();
   void connect_collinear();
   void index_neighbors();
 
   std::span<const Point> points_;
   std::vector<Delaunay_edge> edges_;
+  std::vector<Delaunay_triangle> triangles_;
   std::vector<std::size_t> first_neighbor_;
   std::vector<Vertex> neighbors_;
 };

@@ -80,6 +80,49 @@ RC_GTEST_PROP(DelaunayTriangulation, ApexesNeighborsAndNearestNeighborsAreConsis
   }
 }
 
+RC_GTEST_PROP(DelaunayTriangulation, KeptTrianglesAreItsEmptyCircleFacesWithTheirSidesAndNeighbors, ()) {
+  const auto points = *point_sets(20);
+  const Delaunay_triangulation dt(points, Keep_triangles::yes);
+  const auto triangles = dt.triangles();
+  const auto edges = dt.edges();
+  RC_ASSERT(Delaunay_triangulation(points).triangles().empty());  // only when asked for
+  // Euler: a triangulation of n points, h on the hull boundary, has 2n - 2 - h triangles.
+  const std::size_t n = points.size();
+  const bool flat = std::none_of(edges.begin(), edges.end(),
+                                 [](const Delaunay_edge& e) { return e.left != no_vertex || e.right != no_vertex; });
+  RC_ASSERT(triangles.size() == (flat ? 0 : 2 * n - 2 - testing::hull_boundary_size(points)));
+  std::vector<int> sides_of_edge(edges.size(), 0);
+  for (Triangle_id t = 0; t < triangles.size(); ++t) {
+    const auto& [corners, sides, across] = triangles[t];
+    RC_ASSERT(CGAL::orientation(points[corners[0]], points[corners[1]], points[corners[2]]) == CGAL::LEFT_TURN);
+    for (const Point& p : points)  // empty circle, brute force
+      RC_ASSERT(CGAL::side_of_oriented_circle(points[corners[0]], points[corners[1]], points[corners[2]], p) !=
+                CGAL::ON_POSITIVE_SIDE);
+    for (int i = 0; i < 3; ++i) {
+      // Side i joins the other two corners and has corner i as its apex on this side.
+      const Delaunay_edge& e = edges[sides[i]];
+      const Vertex from = corners[(i + 1) % 3], to = corners[(i + 2) % 3];
+      RC_ASSERT(std::minmax(from, to) == std::minmax(e.source, e.target));
+      RC_ASSERT((e.source == from ? e.left : e.right) == corners[i]);
+      ++sides_of_edge[sides[i]];
+      // Across it: the triangle on its other side, which has it too and leads back here.
+      const Vertex other_apex = e.source == from ? e.right : e.left;
+      if (other_apex == no_vertex) {
+        RC_ASSERT(across[i] == no_triangle);
+        continue;
+      }
+      RC_ASSERT(across[i] < triangles.size());
+      const Delaunay_triangle& u = triangles[across[i]];
+      const auto back = std::find(u.sides.begin(), u.sides.end(), sides[i]) - u.sides.begin();
+      RC_ASSERT(back < 3);
+      RC_ASSERT(u.corners[back] == other_apex);
+      RC_ASSERT(u.across[back] == t);
+    }
+  }
+  for (Edge_id id = 0; id < edges.size(); ++id)
+    RC_ASSERT(sides_of_edge[id] == (edges[id].left != no_vertex) + (edges[id].right != no_vertex));
+}
+
 // Whether every edge's id comes back from its two ends, given either way round.
 bool finds_every_edge(const Delaunay_triangulation& dt) {
   const Delaunay_edge_index index(dt);
