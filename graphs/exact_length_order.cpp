@@ -48,8 +48,13 @@ void sort_records_by_exact_length(std::span<const Point> points, std::span<Edge_
     if (!(run->squared_length >= 0x1p-800 && std::prev(end)->squared_length <= 0x1p1000))
       return std::sort(run, end, shorter);  // the fine keys could underflow or overflow
     refined.clear();
-    for (auto e = run; e != end; ++e)
+    for (auto e = run; e != end; ++e) {
+      if (end - e > 8) {  // sorted by length, the ends are scattered: start loading them early
+        __builtin_prefetch(&points[e[8].source]);
+        __builtin_prefetch(&points[e[8].target]);
+      }
       refined.emplace_back(geometry::refined_squared_distance(points[e->source], points[e->target]), *e);
+    }
     std::sort(refined.begin(), refined.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     const auto finely_separated = [](const auto& shorter, const auto& longer) {
       return geometry::certain_sign_of_difference(shorter, longer) == CGAL::POSITIVE;
