@@ -115,10 +115,12 @@ class Paths {
     const Vertex ra = find(a), rb = find(b);
     const Path &path_a = paths_[ra], &path_b = paths_[rb];
     std::array<Vertex, 2> longest = path_a.longest;
-    if (longest[0] == no_vertex || (path_b.longest[0] != no_vertex && longer(path_b.longest, longest))) longest = path_b.longest;
+    if (longest[0] == no_vertex || (path_b.longest[0] != no_vertex && longer(path_b.longest, longest)))
+      longest = path_b.longest;
     if (longest[0] == no_vertex || longer(std::array<Vertex, 2>{a, b}, longest)) longest = {a, b};
     if (ra == rb) {  // a cycle: no ends left
-      paths_[ra] = {.ends = {no_vertex, no_vertex}, .longest = longest, .size = path_a.size, .waited_at = {false, false}};
+      paths_[ra] = {
+          .ends = {no_vertex, no_vertex}, .longest = longest, .size = path_a.size, .waited_at = {false, false}};
       return ra;
     }
     // The merged path's ends: the far end of a's path, then that of b's.
