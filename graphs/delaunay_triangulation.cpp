@@ -102,9 +102,11 @@ void Delaunay_triangulation::triangulate() {
   // addresses) make the choice the same on every run.
   for (const auto face : dt.finite_face_handles()) {
     const Vertex corner[3] = {face->vertex(0)->info(), face->vertex(1)->info(), face->vertex(2)->info()};
+    if constexpr (with_triangles) triangles_[face->info()].corners = {corner[0], corner[1], corner[2]};
     for (int i = 0; i < 3; ++i) {
       const auto neighbor = face->neighbor(i);
       const bool on_hull = dt.is_infinite(neighbor);
+      if constexpr (with_triangles) triangles_[face->info()].across[i] = on_hull ? no_triangle : neighbor->info();
       // source -> target runs clockwise in `face`, which therefore lies on its right.
       const Vertex source = corner[Cgal_delaunay::cw(i)], target = corner[Cgal_delaunay::ccw(i)];
       if (source > target && !on_hull) continue;  // the other face has it; skip the apex lookup
@@ -120,12 +122,6 @@ void Delaunay_triangulation::triangulate() {
         if (!on_hull) triangles_[neighbor->info()].sides[back] = id;
       }
       edges_.push_back(e);
-    }
-    if constexpr (with_triangles) {
-      Delaunay_triangle& t = triangles_[face->info()];
-      t.corners = {corner[0], corner[1], corner[2]};
-      for (int i = 0; i < 3; ++i)
-        t.across[i] = dt.is_infinite(face->neighbor(i)) ? no_triangle : face->neighbor(i)->info();
     }
   }
 }
