@@ -77,32 +77,33 @@ class Connect2d {
       in_bc[id] = true;
       ++valence[edges[id].source], ++valence[edges[id].target];
     };
-    // In length order the edges, and then their ends, are scattered: each loop starts
-    // loading the edge 16 ranks ahead and the ends of the one 8 ahead. (Written out in
-    // each loop: GCC deletes a call to a lambda that only prefetches, as having no effect.)
+    in_length_order(parent, [&](Edge_id id) {
+      const Vertex a = root(edges[id].source), b = root(edges[id].target);
+      if (a != b) parent[a] = b, add(id);
+    });
+    in_length_order(valence, [&](Edge_id id) {
+      if (!in_bc[id] && (valence[edges[id].source] < 2 || valence[edges[id].target] < 2)) add(id);
+    });
+    return in_bc;
+  }
+
+  // Calls visit(id) for every edge, shortest first. In that order the edges, and then
+  // their ends, are scattered: it starts loading the edge 16 ranks ahead, and what
+  // `by_point` holds for the ends of the one 8 ahead. (The prefetches sit in this loop, not
+  // in a lambda of their own: GCC deletes a call to a function that only prefetches.)
+  template <class Visit>
+  void in_length_order(const std::vector<std::uint32_t>& by_point, Visit visit) const {
+    const auto edges = dt_.edges();
     const std::size_t count = by_rank_.size();
     for (std::size_t r = 0; r < count; ++r) {
       if (r + 16 < count) __builtin_prefetch(&edges[by_rank_[r + 16]]);
       if (r + 8 < count) {
         const Delaunay_edge& ahead = edges[by_rank_[r + 8]];
-        __builtin_prefetch(&parent[ahead.source]);
-        __builtin_prefetch(&parent[ahead.target]);
+        __builtin_prefetch(&by_point[ahead.source]);
+        __builtin_prefetch(&by_point[ahead.target]);
       }
-      const Edge_id id = by_rank_[r];
-      const Vertex a = root(edges[id].source), b = root(edges[id].target);
-      if (a != b) parent[a] = b, add(id);
+      visit(by_rank_[r]);
     }
-    for (std::size_t r = 0; r < count; ++r) {
-      if (r + 16 < count) __builtin_prefetch(&edges[by_rank_[r + 16]]);
-      if (r + 8 < count) {
-        const Delaunay_edge& ahead = edges[by_rank_[r + 8]];
-        __builtin_prefetch(&valence[ahead.source]);
-        __builtin_prefetch(&valence[ahead.target]);
-      }
-      const Edge_id id = by_rank_[r];
-      if (!in_bc[id] && (valence[edges[id].source] < 2 || valence[edges[id].target] < 2)) add(id);
-    }
-    return in_bc;
   }
 
   // Step 2: flood the triangles from the unbounded face across non-BC edges; the rest are
