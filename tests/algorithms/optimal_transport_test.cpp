@@ -9,7 +9,8 @@
 //    edge (Optimal_transport_options::Hole_search);
 //  - the oracle: CGAL's Optimal_transportation_reconstruction_2 (no relocation, as ours)
 //    on a few hundred noisy closed curves, both outputs' transport cost measured by one
-//    evaluator here, at the same vertex count.
+//    evaluator here, at the same vertex count, beside CGAL against itself on the same
+//    points shuffled.
 #include <gtest/gtest.h>
 
 #include <rapidcheck/gtest.h>
@@ -431,42 +432,64 @@ class Seeded_cgal : public CGAL::Optimal_transportation_reconstruction_2<geometr
   void seed() { m_dt.rng = CGAL::Random(0); }
 };
 
+// CGAL's output at `vertices`, its transport cost measured by transport_cost above.
+double cgal_cost(const std::vector<Point>& points, std::size_t vertices) {
+  CGAL::get_default_random() = CGAL::Random(0);
+  Seeded_cgal cgal(points);
+  cgal.seed();
+  cgal.run_until(vertices);
+  std::vector<Point> isolated;
+  std::vector<geometry::Kernel::Segment_2> segments;
+  cgal.list_output(std::back_inserter(isolated), std::back_inserter(segments));
+  std::vector<std::pair<Point, Point>> edges;
+  std::vector<Point> output = isolated;
+  for (const auto& s : segments) {
+    edges.emplace_back(s.source(), s.target());
+    output.push_back(s.source()), output.push_back(s.target());
+  }
+  return transport_cost(points, output, edges);
+}
+
+// Sorted ratios, printed with how many lie at most 5 % above 1 and within 5 % of 1.
+std::vector<double> summarize(const char* what, std::vector<double> ratios) {
+  std::sort(ratios.begin(), ratios.end());
+  const auto at_most = std::count_if(ratios.begin(), ratios.end(), [](double r) { return r <= 1.05; });
+  const auto within = std::count_if(ratios.begin(), ratios.end(), [](double r) { return std::abs(r - 1) <= 0.05; });
+  std::cout << what << " over " << ratios.size() << " curves: min " << ratios.front() << ", p10 "
+            << ratios[ratios.size() / 10] << ", median " << ratios[ratios.size() / 2] << ", p90 "
+            << ratios[ratios.size() * 9 / 10] << ", max " << ratios.back() << "; at most 5 % above: " << at_most
+            << ", within 5 %: " << within << "\n";
+  return ratios;
+}
+
 // At CGAL's vertex count, our total cost against CGAL's on 300 noisy closed curves, both
-// measured by transport_cost above. The issue's target (within 5 % on 95 %) is not met yet:
-// the distribution is printed, and the test guards the median against getting worse than
-// measured when the rewrite landed (1.32).
+// measured by transport_cost above, beside CGAL's against itself on the same points given
+// in another order: its queue breaks equal costs by address, so the order changes which
+// collapses it makes. That spread is the yardstick. The issue asked for ours within 5 %
+// of CGAL's on 95 % of curves, but CGAL with the points shuffled meets that on far fewer
+// (measured: 244 of 300 at most 5 % above, 79 within 5 % either way, median 0.934): a
+// greedy simplification's cost moves by tens of percent with any change in the order of
+// its steps. The test holds that, and guards our median against getting worse than
+// measured when vertex removal landed (1.32).
 TEST(OptimalTransport, CostAgainstCgalsAtTheSameVertexCount) {
-  std::vector<double> ratios;
+  std::vector<double> ours, shuffled;
   for (std::uint64_t seed = 0; seed < 300; ++seed) {
     const std::size_t n = 100 + seed % 5 * 50;
     const double sigma = std::array{0.003, 0.01, 0.02}[seed % 3];
     const auto points = fourier_curve(n, sigma, seed);
     const std::size_t vertices = n / std::array<std::size_t, 3>{4, 8, 15}[seed / 3 % 3];
-
-    CGAL::get_default_random() = CGAL::Random(0);
-    Seeded_cgal cgal(points);
-    cgal.seed();
-    cgal.run_until(vertices);
-    std::vector<Point> isolated;
-    std::vector<geometry::Kernel::Segment_2> segments;
-    cgal.list_output(std::back_inserter(isolated), std::back_inserter(segments));
-    std::vector<std::pair<Point, Point>> cgal_edges;
-    std::vector<Point> cgal_vertices = isolated;
-    for (const auto& s : segments) {
-      cgal_edges.emplace_back(s.source(), s.target());
-      cgal_vertices.push_back(s.source()), cgal_vertices.push_back(s.target());
-    }
-    const double theirs = transport_cost(points, cgal_vertices, cgal_edges);
-    const double ours = transport_cost(points, optimal_transport_reconstruction(points, {.vertices = vertices}));
-    ratios.push_back(ours / theirs);
+    const double theirs = cgal_cost(points, vertices);
+    ours.push_back(transport_cost(points, optimal_transport_reconstruction(points, {.vertices = vertices})) / theirs);
+    auto reordered = points;
+    std::shuffle(reordered.begin(), reordered.end(), std::mt19937(static_cast<std::uint32_t>(seed)));
+    shuffled.push_back(cgal_cost(reordered, vertices) / theirs);
   }
-  std::sort(ratios.begin(), ratios.end());
-  const auto within = std::count_if(ratios.begin(), ratios.end(), [](double r) { return r <= 1.05; });
-  std::cout << "ours / CGAL's cost over " << ratios.size() << " curves: min " << ratios.front() << ", p10 "
-            << ratios[ratios.size() / 10] << ", median " << ratios[ratios.size() / 2] << ", p90 "
-            << ratios[ratios.size() * 9 / 10] << ", max " << ratios.back() << "; within 5 %: " << within << "\n";
+  const auto ratios = summarize("ours / CGAL's cost", ours);
+  const auto cgal = summarize("CGAL's on shuffled points / CGAL's cost", shuffled);
   EXPECT_LE(ratios[ratios.size() / 2], 1.4);
   EXPECT_GE(ratios[ratios.size() / 10], 0.5) << "ours far below CGAL's would mean the evaluator is wrong";
+  EXPECT_LT(std::count_if(cgal.begin(), cgal.end(), [](double r) { return std::abs(r - 1) <= 0.05; }), 285)
+      << "CGAL now agrees with itself: the issue's 95 % target is a fair one again";
 }
 
 }  // namespace
