@@ -449,28 +449,35 @@ class Simplification {
     branching_ += branching(a) + branching(b);
   }
 
-  // The squared distance from sample s to segment (a, b), in scaled coordinates.
-  double squared_distance(Index s, Index a, Index b) const {
-    const auto [px, py] = scaled_[s];
-    const double dx = scaled_[b][0] - scaled_[a][0], dy = scaled_[b][1] - scaled_[a][1];
-    const double ux = px - scaled_[a][0], uy = py - scaled_[a][1];
-    const double dot = dx * ux + dy * uy, length2 = dx * dx + dy * dy;
-    if (dot <= 0) return ux * ux + uy * uy;
-    if (dot >= length2) return (px - scaled_[b][0]) * (px - scaled_[b][0]) + (py - scaled_[b][1]) * (py - scaled_[b][1]);
-    const double across = dx * uy - dy * ux;
-    return across * across / length2;
-  }
+  // The squared distance to segment (a, b) from a point, in scaled coordinates; the
+  // segment's differences computed once for the many samples measured against it.
+  struct Segment_distance {
+    double ax, ay, bx, by, dx, dy, length2;
+    Segment_distance(const std::array<double, 2>& a, const std::array<double, 2>& b)
+        : ax(a[0]), ay(a[1]), bx(b[0]), by(b[1]), dx(bx - ax), dy(by - ay), length2(dx * dx + dy * dy) {}
+    double operator()(const std::array<double, 2>& p) const {
+      const double ux = p[0] - ax, uy = p[1] - ay;
+      const double dot = dx * ux + dy * uy;
+      if (dot <= 0) return ux * ux + uy * uy;
+      if (dot >= length2) return (p[0] - bx) * (p[0] - bx) + (p[1] - by) * (p[1] - by);
+      const double across = dx * uy - dy * ux;
+      return across * across / length2;
+    }
+  };
+  double squared_distance(Index s, Index a, Index b) const { return Segment_distance(scaled_[a], scaled_[b])(scaled_[s]); }
 
   // Gives each orphan the nearest of `edges_` (the earlier edge on a tie): bucket_[k]
   // lists those of edge k.
   void assign_orphans() {
     buckets_.resize(edges_.size());
     for (auto& bucket : buckets_) bucket.clear();
+    segments_.clear();
+    for (const auto& [a, b] : edges_) segments_.emplace_back(scaled_[a], scaled_[b]);
     for (const Index s : orphans_) {
       std::size_t best = 0;
       double nearest = INFINITY;
-      for (std::size_t k = 0; k < edges_.size(); ++k)
-        if (const double d = squared_distance(s, edges_[k].first, edges_[k].second); d < nearest) nearest = d, best = k;
+      for (std::size_t k = 0; k < segments_.size(); ++k)
+        if (const double d = segments_[k](scaled_[s]); d < nearest) nearest = d, best = k;
       buckets_[best].push_back(s);
     }
   }
@@ -508,28 +515,21 @@ class Simplification {
     const auto edge = [&](Face f, int e) {
       return std::minmax(ring_[f->vertex((e + 1) % 3)->info()], ring_[f->vertex((e + 2) % 3)->info()]);
     };
-    // The ring's edges (on the hull, a chain edge can bound no triangle of the hole) and
-    // the edges of the hole's triangles.
-    edges_.clear();
-    for (Index i = 0; i + 1 < d || (closed && i < d); ++i) edges_.emplace_back(ring_[i], ring_[(i + 1) % d]);
-    for (const Face f : dt.finite_face_handles())
-      if (in_hole(f))
-        for (int e = 0; e < 3; ++e) edges_.emplace_back(edge(f, e));
-    canonical_edge_list();
-    // Each face's edges as positions in edges_ (edges_.size() for an edge not in it).
-    for (const Face f : dt.finite_face_handles())
-      for (int e = 0; e < 3; ++e) {
-        const Index_pair pair = edge(f, e);
-        const auto it = std::lower_bound(edges_.begin(), edges_.end(), pair);
-        f->info().edge[e] = static_cast<std::size_t>((it != edges_.end() && *it == pair ? it : edges_.end()) - edges_.begin());
-        f->info().visited = 0;
-      }
-    buckets_.resize(edges_.size());
-    for (auto& bucket : buckets_) bucket.clear();
+    // A side is a hole edge if a triangle on either side of it is in the hole, or it is a
+    // ring edge (on the hull, a chain edge can bound no triangle of the hole).
+    for (const Face f : dt.finite_face_handles()) f->info() = {in_hole(f), 0};
+    const auto is_hole_edge = [&](Face f, int e) {
+      const Face g = f->neighbor(e);
+      if (f->info().in_hole || (!dt.is_infinite(g) && g->info().in_hole)) return true;
+      const Index i = f->vertex((e + 1) % 3)->info(), j = f->vertex((e + 2) % 3)->info();
+      const Index low = std::min(i, j), high = std::max(i, j);
+      return high == low + 1 || (closed && low == 0 && high == d - 1);
+    };
     Face hint;
     std::size_t stamp = 0;
     std::vector<std::pair<double, Face>> frontier;  // a min-heap on distance
     const auto farther = [](const auto& x, const auto& y) { return x.first > y.first; };
+    assigned_.clear();
     for (const Index s : orphans_) {
       Ring_triangulation::Locate_type type;
       int li = 0;
@@ -538,17 +538,18 @@ class Simplification {
       const bool holds = !dt.is_infinite(start);
       if (!holds) start = start->neighbor(start->index(dt.infinite_vertex()));
       ++stamp;
-      std::size_t best = edges_.size();
+      Index_pair best{none, none};
       double nearest = INFINITY;
       // Visits face f: offers its hole edges, and returns its distance from the sample.
+      // Ties go to the smaller edge (pairs of indices, smaller first), as in assign_orphans.
       const auto visit = [&](Face f) {
         f->info().visited = stamp;
         double distance = INFINITY;
         for (int e = 0; e < 3; ++e) {
-          const double to_edge = squared_distance(s, ring_[f->vertex((e + 1) % 3)->info()], ring_[f->vertex((e + 2) % 3)->info()]);
+          const Index_pair pair = edge(f, e);
+          const double to_edge = squared_distance(s, pair.first, pair.second);
           distance = std::min(distance, to_edge);
-          const std::size_t k = f->info().edge[e];
-          if (k < edges_.size() && (to_edge < nearest || (to_edge == nearest && k < best))) nearest = to_edge, best = k;
+          if ((to_edge < nearest || (to_edge == nearest && pair < best)) && is_hole_edge(f, e)) nearest = to_edge, best = pair;
         }
         return distance;
       };
@@ -566,8 +567,20 @@ class Simplification {
           std::push_heap(frontier.begin(), frontier.end(), farther);
         }
       }
-      buckets_[best].push_back(s);
+      assigned_.emplace_back(best, s);
     }
+    // edges_ and buckets_ as assign_orphans leaves them, for the edges that receive samples.
+    std::stable_sort(assigned_.begin(), assigned_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    edges_.clear();
+    for (const auto& [edge, sample] : assigned_) {
+      if (edges_.empty() || edges_.back() != edge) {
+        edges_.push_back(edge);
+        if (buckets_.size() < edges_.size()) buckets_.emplace_back();
+        buckets_[edges_.size() - 1].clear();
+      }
+      buckets_[edges_.size() - 1].push_back(sample);
+    }
+    buckets_.resize(edges_.size());
     return true;
   }
 
@@ -699,8 +712,8 @@ class Simplification {
   static constexpr std::size_t small_ring = 16;
   using Ring_vertex_base = CGAL::Triangulation_vertex_base_with_info_2<Index, Kernel>;  // the position in the ring
   struct Ring_face_info {
-    std::array<std::size_t, 3> edge;  // edge e's position in edges_, edges_.size() if not a hole edge
-    std::size_t visited;              // the last search that reached the face
+    bool in_hole;         // whether the face is a triangle of the hole
+    std::size_t visited;  // the last search that reached the face
   };
   using Ring_face_base = CGAL::Triangulation_face_base_with_info_2<Ring_face_info, Kernel>;
   using Ring_triangulation =
@@ -711,6 +724,8 @@ class Simplification {
   std::vector<std::pair<Point, Index>> ring_points_;
   std::vector<Index_pair> edges_;
   std::vector<std::vector<Index>> buckets_;
+  std::vector<std::pair<Index_pair, Index>> assigned_;
+  std::vector<Segment_distance> segments_;
   std::vector<std::pair<double, Index>> along_;
   Edge_plan trial_;
 };
