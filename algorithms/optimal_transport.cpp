@@ -572,9 +572,9 @@ class Simplification {
     // edges_ and buckets_ as assign_orphans leaves them, for the edges that receive samples.
     std::stable_sort(assigned_.begin(), assigned_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     edges_.clear();
-    for (const auto& [edge, sample] : assigned_) {
-      if (edges_.empty() || edges_.back() != edge) {
-        edges_.push_back(edge);
+    for (const auto& [receiving, sample] : assigned_) {
+      if (edges_.empty() || edges_.back() != receiving) {
+        edges_.push_back(receiving);
         if (buckets_.size() < edges_.size()) buckets_.emplace_back();
         buckets_[edges_.size() - 1].clear();
       }
