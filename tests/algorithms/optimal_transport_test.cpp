@@ -450,16 +450,22 @@ double cgal_cost(const std::vector<Point>& points, std::size_t vertices) {
   return transport_cost(points, output, edges);
 }
 
-// Sorted ratios, printed with how many lie at most 5 % above 1 and within 5 % of 1.
-std::vector<double> summarize(const char* what, std::vector<double> ratios) {
+// Ratios sorted, with how many lie at most 5 % above 1 and within 5 % of 1; printed.
+struct Ratio_summary {
+  std::vector<double> sorted;
+  std::ptrdiff_t at_most_5_percent_above = 0, within_5_percent = 0;
+};
+Ratio_summary summarize(const char* what, std::vector<double> ratios) {
   std::sort(ratios.begin(), ratios.end());
-  const auto at_most = std::count_if(ratios.begin(), ratios.end(), [](double r) { return r <= 1.05; });
-  const auto within = std::count_if(ratios.begin(), ratios.end(), [](double r) { return std::abs(r - 1) <= 0.05; });
+  Ratio_summary summary{.sorted = ratios,
+                        .at_most_5_percent_above = std::count_if(ratios.begin(), ratios.end(), [](double r) { return r <= 1.05; }),
+                        .within_5_percent = std::count_if(ratios.begin(), ratios.end(), [](double r) { return std::abs(r - 1) <= 0.05; })};
   std::cout << what << " over " << ratios.size() << " curves: min " << ratios.front() << ", p10 "
             << ratios[ratios.size() / 10] << ", median " << ratios[ratios.size() / 2] << ", p90 "
-            << ratios[ratios.size() * 9 / 10] << ", max " << ratios.back() << "; at most 5 % above: " << at_most
-            << ", within 5 %: " << within << "\n";
-  return ratios;
+            << ratios[ratios.size() * 9 / 10] << ", max " << ratios.back()
+            << "; at most 5 % above: " << summary.at_most_5_percent_above << ", within 5 %: " << summary.within_5_percent
+            << "\n";
+  return summary;
 }
 
 // At CGAL's vertex count, our total cost against CGAL's on 300 noisy closed curves, both
@@ -467,7 +473,7 @@ std::vector<double> summarize(const char* what, std::vector<double> ratios) {
 // in another order: its queue breaks equal costs by address, so the order changes which
 // collapses it makes. That spread is the yardstick. The issue asked for ours within 5 %
 // of CGAL's on 95 % of curves, but CGAL with the points shuffled meets that on far fewer
-// (measured: 244 of 300 at most 5 % above, 79 within 5 % either way, median 0.934): a
+// (measured: 244 of 300 at most 5 % above, 79–95 within 5 % either way over four runs, median 0.934–0.951): a
 // greedy simplification's cost moves by tens of percent with any change in the order of
 // its steps. The test holds that, and guards our median against getting worse than
 // measured when vertex removal landed (1.32).
@@ -484,12 +490,11 @@ TEST(OptimalTransport, CostAgainstCgalsAtTheSameVertexCount) {
     std::shuffle(reordered.begin(), reordered.end(), std::mt19937(static_cast<std::uint32_t>(seed)));
     shuffled.push_back(cgal_cost(reordered, vertices) / theirs);
   }
-  const auto ratios = summarize("ours / CGAL's cost", ours);
+  const auto ratios = summarize("ours / CGAL's cost", ours).sorted;
   const auto cgal = summarize("CGAL's on shuffled points / CGAL's cost", shuffled);
   EXPECT_LE(ratios[ratios.size() / 2], 1.4);
   EXPECT_GE(ratios[ratios.size() / 10], 0.5) << "ours far below CGAL's would mean the evaluator is wrong";
-  EXPECT_LT(std::count_if(cgal.begin(), cgal.end(), [](double r) { return std::abs(r - 1) <= 0.05; }), 285)
-      << "CGAL now agrees with itself: the issue's 95 % target is a fair one again";
+  EXPECT_LT(cgal.within_5_percent, 285) << "CGAL now agrees with itself: the issue's 95 % target is a fair one again";
 }
 
 }  // namespace
